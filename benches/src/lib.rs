@@ -1,0 +1,1 @@
+//! Benchmark crate (benchmarks live in `benches/`).

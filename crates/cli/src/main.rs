@@ -1,0 +1,2 @@
+//! The `lowdisc` command-line tool (in progress).
+fn main() {}

@@ -1,0 +1,66 @@
+//! Generates the Sobol generator matrices for all 21,201 dimensions of the
+//! Joe-Kuo 2008 direction numbers (file `new-joe-kuo-6.21201`, taken unchanged
+//! from the `sobol` crate on crates.io, which ships the published file) and
+//! writes them as a flat little/native-endian `u32` table to `OUT_DIR`.
+//!
+//! Layout: `NUM_DIMENSIONS * 32` words; word `32 * d + c` is column `c` of the
+//! generator matrix of dimension `d`, with the most significant output digit in
+//! bit 31 (so dimension 0, van der Corput, has column `c` equal to `1 << (31 - c)`).
+//! The recurrence is the one of Joe & Kuo's reference generator (their
+//! `sobol.cc`), see `crates/lowdisc/LICENSE-JOE-KUO` for attribution.
+
+use std::io::Write;
+
+const BITS: usize = 32;
+
+fn main() {
+    println!("cargo:rerun-if-changed=build.rs");
+    let params = sobol::params::JoeKuoD6::extended();
+    let num_dimensions = params.dim_params.len() + 1;
+    assert_eq!(num_dimensions, 21_201, "unexpected Joe-Kuo table size");
+
+    let mut table: Vec<u32> = Vec::with_capacity(num_dimensions * BITS);
+    // Dimension 0: the van der Corput sequence (identity generator matrix).
+    table.extend((0..BITS).map(|c| 1u32 << (31 - c)));
+    for (offset, dim) in params.dim_params.iter().enumerate() {
+        assert_eq!(dim.d as usize, offset + 2, "Joe-Kuo rows out of order");
+        table.extend_from_slice(&columns(dim.a, &dim.m));
+    }
+
+    let big_endian = std::env::var("CARGO_CFG_TARGET_ENDIAN").as_deref() == Ok("big");
+    let mut bytes = Vec::with_capacity(table.len() * 4);
+    for word in &table {
+        let b = if big_endian { word.to_be_bytes() } else { word.to_le_bytes() };
+        bytes.extend_from_slice(&b);
+    }
+    let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").unwrap());
+    std::fs::File::create(out.join("sobol_matrices.bin"))
+        .and_then(|mut f| f.write_all(&bytes))
+        .expect("cannot write Sobol table");
+    std::fs::write(
+        out.join("sobol_dimensions.rs"),
+        format!("/// Number of Sobol dimensions in the table.\npub const NUM_DIMENSIONS: usize = {num_dimensions};\n"),
+    )
+    .expect("cannot write dimension count");
+}
+
+/// The 32 generator-matrix columns of one dimension from its primitive
+/// polynomial coefficients `a` (degree `s = m.len()`) and initial direction
+/// numbers `m_1..m_s` (Joe & Kuo's notation; `m_i` odd and `< 2^i`).
+fn columns(a: u32, m: &[u32]) -> [u32; BITS] {
+    let s = m.len();
+    let mut v = [0u32; BITS];
+    for i in 0..BITS.min(s) {
+        v[i] = m[i] << (31 - i);
+    }
+    for i in s..BITS {
+        let mut x = v[i - s] ^ (v[i - s] >> s);
+        for k in 1..s {
+            if (a >> (s - 1 - k)) & 1 == 1 {
+                x ^= v[i - k];
+            }
+        }
+        v[i] = x;
+    }
+    v
+}

@@ -1,0 +1,70 @@
+//! The error type of the sequence library.
+
+use core::fmt;
+
+/// What can go wrong when a sequence or sampler is configured.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Error {
+    /// A dimension at or beyond the number the sequence provides.
+    DimensionOutOfRange {
+        /// The dimension asked for.
+        dimension: u64,
+        /// The number of dimensions available (valid: `0..available`).
+        available: u64,
+    },
+    /// The paper permutation threshold must lie in `[0, 1]`.
+    ThresholdOutOfRange(f64),
+    /// A sample count of zero, or one too large for the sequence's index range.
+    InvalidSampleCount {
+        /// The count asked for.
+        count: u64,
+        /// Why it cannot be used.
+        reason: &'static str,
+    },
+    /// An image resolution the sampler cannot address.
+    InvalidResolution {
+        /// Width in pixels.
+        width: u32,
+        /// Height in pixels.
+        height: u32,
+        /// Why it cannot be used.
+        reason: &'static str,
+    },
+    /// A pixel outside the image.
+    PixelOutOfRange {
+        /// The pixel asked for.
+        pixel: [u32; 2],
+        /// Width and height of the image.
+        resolution: [u32; 2],
+    },
+    /// A sampler name that is not known.
+    UnknownSampler(alloc::string::String),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::DimensionOutOfRange { dimension, available } => write!(
+                f,
+                "dimension {dimension} is out of range: this sequence has dimensions 0..{available}"
+            ),
+            Error::ThresholdOutOfRange(t) => {
+                write!(f, "threshold {t} is outside [0, 1]")
+            }
+            Error::InvalidSampleCount { count, reason } => {
+                write!(f, "invalid sample count {count}: {reason}")
+            }
+            Error::InvalidResolution { width, height, reason } => {
+                write!(f, "invalid resolution {width}x{height}: {reason}")
+            }
+            Error::PixelOutOfRange { pixel, resolution } => write!(
+                f,
+                "pixel ({}, {}) is outside the {}x{} image",
+                pixel[0], pixel[1], resolution[0], resolution[1]
+            ),
+            Error::UnknownSampler(name) => write!(f, "unknown sampler `{name}`"),
+        }
+    }
+}
+
+impl core::error::Error for Error {}

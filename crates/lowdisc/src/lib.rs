@@ -1,0 +1,56 @@
+//! # lowdisc: sample sequences for Monte Carlo rendering
+//!
+//! Exact Sobol sequences (all 21,201 dimensions of Joe & Kuo 2008), the
+//! digit-permuted Sobol of Song & Ro (2019) in a literal and a reproducible
+//! form, the modern randomizations (random digital shift, exact Owen, fast
+//! hash-based Owen), Halton, stratified and independent sequences, and the
+//! pixel samplers a renderer drives through four calls (`start_pixel_sample`,
+//! `get_1d`, `get_2d`, `get_pixel_2d`).
+//!
+//! ## Conventions
+//! * A sample value is a 32-bit *digit word*: bit 31 is the first binary digit
+//!   after the point, so the value is `word * 2^-32`. Every sequence here is
+//!   defined on these words; floats are derived with [`to_f32`]/[`to_f64`],
+//!   which never round up to 1.
+//! * [`sobol::sample`] is Sobol's own definition (natural order: index bit `c`
+//!   selects matrix column `c`), which is what pbrt uses. Joe & Kuo's reference
+//!   generator and `scipy.stats.qmc.Sobol` emit the same points in Gray-code
+//!   order: their point `k` is `sample(gray(k), d)`; [`sobol::GrayCodeBatch`]
+//!   produces that order fast. The first `2^m` points are the same set in
+//!   both orders.
+//! * Every random choice takes an explicit seed.
+//!
+//! The crate is `no_std` (with `alloc`) when the default `std` feature is off.
+#![cfg_attr(not(feature = "std"), no_std)]
+
+extern crate alloc;
+
+pub mod error;
+pub mod halton;
+pub mod hash;
+pub mod independent;
+pub mod paper;
+pub mod pcg;
+pub mod pixel;
+pub mod scramble;
+pub mod sobol;
+pub mod stratified;
+
+pub use error::Error;
+pub use scramble::Randomize;
+
+/// The largest `f32` below 1.
+pub const ONE_MINUS_EPSILON_F32: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// Converts a 32-bit digit word to `[0, 1)` as `f32`, keeping the 24 leading
+/// digits exactly (the value is never rounded up to 1).
+#[inline]
+pub fn to_f32(word: u32) -> f32 {
+    (word >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
+/// Converts a 32-bit digit word to `[0, 1)` as `f64`, exactly.
+#[inline]
+pub fn to_f64(word: u32) -> f64 {
+    word as f64 * (1.0 / 4_294_967_296.0)
+}

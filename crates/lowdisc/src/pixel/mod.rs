@@ -1,0 +1,1 @@
+//! Pixel samplers: the interface a renderer drives (in progress).

@@ -1,0 +1,1 @@
+//! Physically based path tracer driven by lowdisc's pixel samplers. (in progress)
