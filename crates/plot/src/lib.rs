@@ -1,0 +1,1 @@
+//! Small plotting helpers writing PNG and SVG (in progress).
