@@ -28,3 +28,38 @@ pub trait PixelSampler {
     /// The position inside the current pixel, in `[0, 1)^2`.
     fn get_pixel_2d(&mut self) -> [f32; 2];
 }
+
+mod global_sobol;
+mod padded_sobol;
+mod sampler;
+mod zsobol;
+
+pub use global_sobol::{GlobalSobolMode, GlobalSobolSampler};
+pub use padded_sobol::{PaddedSobolSampler, permutation_element};
+pub use sampler::Sampler;
+pub use zsobol::ZSobolSampler;
+
+use crate::Randomize;
+
+/// The seed a [`Randomize`] carries (0 for [`Randomize::None`]).
+pub(crate) fn randomize_seed(randomize: Randomize) -> u64 {
+    match randomize {
+        Randomize::None => 0,
+        Randomize::Xor { seed } | Randomize::Owen { seed } | Randomize::FastOwen { seed } => seed,
+    }
+}
+
+/// The same kind of randomization with its seed replaced.
+pub(crate) fn reseed(randomize: Randomize, seed: u64) -> Randomize {
+    match randomize {
+        Randomize::None => Randomize::None,
+        Randomize::Xor { .. } => Randomize::Xor { seed },
+        Randomize::Owen { .. } => Randomize::Owen { seed },
+        Randomize::FastOwen { .. } => Randomize::FastOwen { seed },
+    }
+}
+
+/// The smallest `k` with `2^k >= n` (`n >= 1`).
+pub(crate) fn ceil_log2(n: u64) -> u32 {
+    if n <= 1 { 0 } else { 64 - (n - 1).leading_zeros() }
+}

@@ -1,0 +1,293 @@
+//! Z-order blue-noise Sobol (Ahmed & Wonka 2020, "Screen-Space Blue-Noise
+//! Diffusion of Monte Carlo Sampling Error via Hierarchical Ordering of
+//! Pixels"), after pbrt-v4's `ZSobolSampler`.
+//!
+//! The image is covered by a square of `R = 2^k` pixels per side. Sample `s`
+//! of pixel `p` has the *Morton index* `morton(p) << m | s` (`m` sample bits).
+//! Its base-4 digits, from the most significant down, are each mapped through
+//! one of the 24 permutations of `{0, 1, 2, 3}`, chosen by a hash of the
+//! sampler dimension, the digit's level and all higher digits; when `m` is
+//! odd the lowest bit is a single binary digit, flipped by a hash of the
+//! digits above it. The result is a bijection of the index space that maps
+//! the block of every pixel to an aligned block of `2^m` indices, so the
+//! `2^m` samples of a pixel are an aligned block of the Sobol sequence (a
+//! (0,m,2)-net in dimensions 0-1), while neighbouring pixels receive
+//! different, hierarchically decorrelated blocks (the blue-noise error
+//! distribution).
+//!
+//! ## Dimensions (as pbrt-v4)
+//! Every 1-D value is Sobol dimension 0 and every 2-D value Sobol dimensions
+//! 0-1 at the permuted index of that sampler dimension; the sampler
+//! dimensions differ by their index permutation and by their randomization
+//! seed (a hash of the seed and the dimension, the same for all pixels,
+//! FastOwen by default in the catalog). The in-pixel offset uses a reserved
+//! dimension key and does not move the counter.
+//!
+//! ## Limits
+//! * `spp` not a power of two: the index layout uses `m = ceil(log2 spp)`
+//!   sample bits and the pixel uses the first `spp` of its `2^m` slots (after
+//!   permutation, a subset of the net). Sample indices `>= spp` are reduced
+//!   modulo `spp`; pixels outside the square wrap modulo `R`.
+//! * The index `2k + m` bits must fit in 64 bits. The Sobol tables have 32
+//!   columns, so index bits above 31 do not enter the Sobol point; they are
+//!   hashed into the randomization seed instead (pixels that share the low
+//!   32 bits get independent scrambles of the same block). Without a
+//!   randomization that would repeat samples, so `Randomize::None` requires
+//!   `2k + m <= 32`.
+
+use super::PixelSampler;
+use crate::hash::{bounded, hash_words, mix64};
+use crate::sobol::sample;
+use crate::{Error, Randomize, to_f32};
+
+/// All 24 permutations of `{0, 1, 2, 3}` in lexicographic order.
+const fn base4_permutations() -> [[u8; 4]; 24] {
+    let mut out = [[0u8; 4]; 24];
+    let mut n = 0;
+    let mut a = 0u8;
+    while a < 4 {
+        let mut b = 0u8;
+        while b < 4 {
+            let mut c = 0u8;
+            while c < 4 {
+                if a != b && a != c && b != c {
+                    out[n] = [a, b, c, 6 - a - b - c];
+                    n += 1;
+                }
+                c += 1;
+            }
+            b += 1;
+        }
+        a += 1;
+    }
+    out
+}
+
+/// The table of the 24 base-4 digit permutations.
+pub const BASE4_PERMUTATIONS: [[u8; 4]; 24] = base4_permutations();
+
+/// Dimension key of the in-pixel offset (above every `u32` dimension).
+const PIXEL_KEY: u64 = 1 << 32;
+/// Salt of the odd final bit's flip.
+const LOW_BIT_SALT: u64 = 0x6c6f_775f_6269_7421;
+
+/// Interleaves the bits of `x` (even positions) and `y` (odd positions).
+fn morton2(x: u32, y: u32) -> u64 {
+    fn spread(v: u32) -> u64 {
+        let mut v = u64::from(v);
+        v = (v | (v << 16)) & 0x0000_ffff_0000_ffff;
+        v = (v | (v << 8)) & 0x00ff_00ff_00ff_00ff;
+        v = (v | (v << 4)) & 0x0f0f_0f0f_0f0f_0f0f;
+        v = (v | (v << 2)) & 0x3333_3333_3333_3333;
+        (v | (v << 1)) & 0x5555_5555_5555_5555
+    }
+    spread(x) | (spread(y) << 1)
+}
+
+/// pbrt-v4-style Z-order Sobol sampler; see the module documentation.
+#[derive(Debug, Clone)]
+pub struct ZSobolSampler {
+    spp: u32,
+    /// `m`: sample bits in the index layout.
+    log2_spp: u32,
+    /// `k`: the square covering the image is `2^k` wide.
+    log2_res: u32,
+    /// Base-4 digits above the odd low bit (if any).
+    base4_digits: u32,
+    randomize: Randomize,
+    seed: u64,
+    morton: u64,
+    dimension: u32,
+}
+
+impl ZSobolSampler {
+    /// A sampler for `spp` samples per pixel of a `resolution` image. The
+    /// seed inside `randomize` is combined with `seed`.
+    pub fn new(
+        spp: u32,
+        resolution: [u32; 2],
+        randomize: Randomize,
+        seed: u64,
+    ) -> Result<Self, Error> {
+        if spp == 0 {
+            return Err(Error::InvalidSampleCount {
+                count: 0,
+                reason: "at least one sample per pixel is needed",
+            });
+        }
+        let [w, h] = resolution;
+        if w == 0 || h == 0 {
+            return Err(Error::InvalidResolution {
+                width: w,
+                height: h,
+                reason: "both sides must be at least 1",
+            });
+        }
+        let log2_spp = super::ceil_log2(u64::from(spp));
+        let log2_res = super::ceil_log2(u64::from(w.max(h)));
+        let bits = 2 * log2_res + log2_spp;
+        if bits > 64 {
+            return Err(Error::InvalidSampleCount {
+                count: u64::from(spp),
+                reason: "the Z-order index (2 log2 R + log2 spp bits) exceeds 64 bits",
+            });
+        }
+        if bits > 32 && randomize == Randomize::None {
+            return Err(Error::InvalidSampleCount {
+                count: u64::from(spp),
+                reason: "unscrambled Z-order Sobol needs 2 log2 R + log2 spp <= 32 index bits",
+            });
+        }
+        Ok(ZSobolSampler {
+            spp,
+            log2_spp,
+            log2_res,
+            base4_digits: log2_res + log2_spp.div_ceil(2),
+            randomize,
+            seed,
+            morton: 0,
+            dimension: 0,
+        })
+    }
+
+    /// The randomization given at construction.
+    pub fn randomize(&self) -> Randomize {
+        self.randomize
+    }
+
+    /// The Morton index of the current pixel sample (before permutation).
+    pub fn morton_index(&self) -> u64 {
+        self.morton
+    }
+
+    /// The permuted 64-bit sequence index of the current pixel sample for
+    /// sampler dimension key `key`.
+    pub fn sample_index(&self, key: u64) -> u64 {
+        let dim_seed = hash_words(&[self.seed, super::randomize_seed(self.randomize), key]);
+        let odd = self.log2_spp & 1;
+        let mut index = 0u64;
+        for i in (odd..self.base4_digits).rev() {
+            let shift = 2 * i - odd;
+            let digit = (self.morton >> shift) & 3;
+            let higher = self.morton.checked_shr(shift + 2).unwrap_or(0);
+            let level = mix64(dim_seed ^ u64::from(i).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+            let p = bounded(mix64(level ^ higher), 24) as usize;
+            index |= u64::from(BASE4_PERMUTATIONS[p][digit as usize]) << shift;
+        }
+        if odd == 1 {
+            let flip = mix64(mix64(dim_seed ^ LOW_BIT_SALT) ^ (self.morton >> 1)) >> 63;
+            index |= (self.morton & 1) ^ flip;
+        }
+        index
+    }
+
+    /// Sobol dimensions 0-1 at the permuted index for `key`, scrambled.
+    fn words_2d(&self, key: u64) -> [u32; 2] {
+        let index = self.sample_index(key);
+        let r = self.randomizer(key, index >> 32);
+        let low = index as u32;
+        [r.apply(sample(low, 0), 0), r.apply(sample(low, 1), 1)]
+    }
+
+    /// The randomization of dimension key `key` (and high index bits `high`).
+    fn randomizer(&self, key: u64, high: u64) -> Randomize {
+        let rs = super::randomize_seed(self.randomize);
+        super::reseed(self.randomize, hash_words(&[self.seed, rs, key, high]))
+    }
+
+    /// The next 1-D value as a digit word.
+    pub fn get_1d_word(&mut self) -> u32 {
+        let key = u64::from(self.dimension);
+        self.dimension = self.dimension.wrapping_add(1);
+        let index = self.sample_index(key);
+        self.randomizer(key, index >> 32)
+            .apply(sample(index as u32, 0), 0)
+    }
+
+    /// The next 2-D value as digit words.
+    pub fn get_2d_words(&mut self) -> [u32; 2] {
+        let key = u64::from(self.dimension);
+        self.dimension = self.dimension.wrapping_add(2);
+        self.words_2d(key)
+    }
+
+    /// The in-pixel offset as digit words.
+    pub fn get_pixel_2d_words(&mut self) -> [u32; 2] {
+        self.words_2d(PIXEL_KEY)
+    }
+}
+
+impl PixelSampler for ZSobolSampler {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp
+    }
+
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
+        let mask = ((1u64 << self.log2_res) - 1) as u32;
+        let code = morton2(pixel[0] & mask, pixel[1] & mask);
+        self.morton = (code << self.log2_spp) | u64::from(sample_index % self.spp);
+        self.dimension = dimension;
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        to_f32(self.get_1d_word())
+    }
+
+    fn get_2d(&mut self) -> [f32; 2] {
+        self.get_2d_words().map(to_f32)
+    }
+
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.get_pixel_2d_words().map(to_f32)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_table_holds_all_24_distinct_permutations() {
+        for (i, p) in BASE4_PERMUTATIONS.iter().enumerate() {
+            let mut sorted = *p;
+            sorted.sort_unstable();
+            assert_eq!(sorted, [0, 1, 2, 3]);
+            assert!(BASE4_PERMUTATIONS[..i].iter().all(|q| q != p));
+        }
+        assert_eq!(BASE4_PERMUTATIONS[0], [0, 1, 2, 3]);
+        assert_eq!(BASE4_PERMUTATIONS[23], [3, 2, 1, 0]);
+    }
+
+    #[test]
+    fn morton_interleaves_x_low() {
+        assert_eq!(morton2(1, 0), 1);
+        assert_eq!(morton2(0, 1), 2);
+        assert_eq!(morton2(3, 5), 0b10_01_11);
+        assert_eq!(morton2(u32::MAX, u32::MAX), u64::MAX);
+    }
+
+    #[test]
+    fn the_index_map_is_a_bijection_preserving_pixel_blocks() {
+        for spp in [1u32, 2, 4, 8, 32] {
+            let mut s = ZSobolSampler::new(spp, [8, 8], Randomize::None, 3).unwrap();
+            let m = s.log2_spp;
+            let total = 64usize << m;
+            let mut seen = alloc::vec![false; total];
+            for y in 0..8 {
+                for x in 0..8 {
+                    let mut block = None;
+                    for k in 0..spp {
+                        s.start_pixel_sample([x, y], k, 0);
+                        let i = s.sample_index(5);
+                        assert!(!seen[i as usize]);
+                        seen[i as usize] = true;
+                        let b = i >> m;
+                        assert!(block.is_none_or(|c| c == b), "pixel block split");
+                        block = Some(b);
+                    }
+                }
+            }
+            assert!(seen.iter().all(|&v| v));
+        }
+    }
+}
