@@ -17,10 +17,12 @@
 //!   up to and including its highest set bit is mapped through `perm`; bits
 //!   above it stay 0. The flip of entry `c` is therefore
 //!   `c ^ (2^(msb(c)+1) - 1)`: its highest set bit is cleared and every bit
-//!   below it is complemented. (Sobol columns have their highest set bit on
-//!   the diagonal, so a flipped column loses its diagonal bit: the matrix is no
-//!   longer guaranteed non-singular, which is why the permutation can break
-//!   the (0,m,2)-net property; see the README for measurements.)
+//!   below it is complemented. Column `i` of a Sobol matrix has its *lowest*
+//!   set bit on the diagonal (digit `i`, bit `31 - i`), so a flipped column
+//!   loses its diagonal digit and gains a 1 in every later digit: the matrix
+//!   stops being upper triangular and is no longer guaranteed non-singular,
+//!   which is why the permutation can break stratification (see the README
+//!   for measurements).
 //! * An entry of 0 (which never occurs in a Sobol matrix) stays 0.
 //! * `threshold` is a parameter in `[0, 1]`: the probability that a column is
 //!   left unflipped (`threshold = 1`: plain Sobol; `0`: every column flipped).
