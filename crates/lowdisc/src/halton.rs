@@ -1,1 +1,288 @@
-//! (in progress)
+//! The Halton sequence (at least 1,000 dimensions), unscrambled, with random
+//! digit permutations, or Owen-scrambled.
+//!
+//! Dimension `d` is the radical inverse in base `b = PRIMES[d]` (dimension 0 is
+//! base 2, the van der Corput sequence): the base-`b` digits `a_0, a_1, ...` of
+//! the index (least significant first) are mirrored about the point,
+//! `x = a_0/b + a_1/b^2 + ...`.
+//!
+//! ## Randomizations ([`HaltonRandomize`])
+//! * `None`: the definition. Values are exact rationals `R / b^m`.
+//! * `PermuteDigits`: as pbrt-v4's `DigitPermutation`: digit position `i` of
+//!   dimension `d` gets its own uniformly random permutation `pi_{d,i}` of
+//!   `0..b` (Fisher-Yates from a PCG32 stream seeded by the seed and `d`), and
+//!   the value is `sum_i pi_{d,i}(a_i) b^-(i+1)`.
+//! * `Owen`: nested scrambling in base `b`: the permutation applied to digit
+//!   `i` is keyed by a hash chain over the seed, `d` and the index digits
+//!   `a_0..a_{i-1}` before it, so points that share a prefix share the
+//!   permutation and all others get independent ones. The permutations are
+//!   the affine maps `a -> (m a + c) mod b` with `m` uniform in `1..b` and `c`
+//!   uniform in `0..b` (`b` is prime, so these are bijections). This family is
+//!   sharply 2-transitive: one digit maps to a uniform digit and two distinct
+//!   digits to a uniform pair of distinct digits, which is all the pairwise
+//!   (variance) behaviour of nested uniform scrambling depends on; for bases
+//!   2 and 3 it is the whole symmetric group.
+//!
+//! ## The infinite tail of zero digits
+//! An index has finitely many nonzero digits, but its radical inverse has
+//! infinitely many digit positions, all zero past the last nonzero digit.
+//! A scramble maps those zeros to `pi_i(0)`, which is generally not zero, so
+//! the scrambled value has an infinite random tail (pbrt-v3 summed it as a
+//! geometric series for its single per-dimension permutation; pbrt-v4 keeps
+//! scrambling digit positions, zeros included, until they fall below float
+//! precision). Here both randomizations scramble exactly
+//! [`scrambled_digits`]`(b) = K` positions, the smallest `K` with
+//! `b^K >= 2^64`, zeros included (every `u64` index has at most `K` digits),
+//! and drop the rest: the value is the scrambled expansion truncated after `K`
+//! digits, which is below the infinite one by less than `b^-K <= 2^-64`.
+//!
+//! ## Output forms
+//! [`Halton::sample_fixed64`] is `floor(x * 2^64)` of that `K`-digit value,
+//! computed exactly in integers; [`Halton::sample_word`] its top 32 bits
+//! (`floor(x * 2^32)`, the crate's digit word); [`Halton::sample`] the `f64`
+//! nearest to the 64-bit value (absolute error below `2^-63`), clamped below 1.
+//!
+//! Permutation tables are built lazily, one dimension at a time on first use,
+//! and shared between clones (with the `std` feature; without it they are
+//! rebuilt on every call, which gives the same values, slowly).
+
+mod digits;
+mod primes;
+mod tables;
+#[cfg(test)]
+mod tests;
+
+pub use primes::{NUM_DIMENSIONS, PRIMES, prime, scrambled_digits};
+
+use crate::Error;
+use crate::hash::{hash2, mix64};
+use crate::scramble::derive_seed;
+use digits::{BASES, Base, MAX_DIGITS};
+
+/// The largest `f64` below 1.
+const ONE_MINUS_EPSILON_F64: f64 = 1.0 - f64::EPSILON / 2.0;
+
+/// How the Halton sequence is randomized (see the module documentation).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum HaltonRandomize {
+    /// The sequence as defined.
+    #[default]
+    None,
+    /// Random digit permutations, one per dimension and digit position.
+    PermuteDigits,
+    /// Nested (Owen) scrambling in base `b`.
+    Owen,
+}
+
+impl HaltonRandomize {
+    /// A short name: `none`, `permute` or `owen`.
+    pub fn name(self) -> &'static str {
+        match self {
+            HaltonRandomize::None => "none",
+            HaltonRandomize::PermuteDigits => "permute",
+            HaltonRandomize::Owen => "owen",
+        }
+    }
+}
+
+/// A (possibly randomized) Halton sequence with random access by index and
+/// dimension.
+#[derive(Clone)]
+pub struct Halton {
+    randomize: HaltonRandomize,
+    seed: u64,
+    tables: tables::PermutationTables,
+}
+
+impl core::fmt::Debug for Halton {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Halton")
+            .field("randomize", &self.randomize)
+            .field("seed", &self.seed)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Halton {
+    /// A Halton sequence with the given randomization. `seed` is ignored by
+    /// [`HaltonRandomize::None`]. Does not build any permutation table yet.
+    pub fn new(randomize: HaltonRandomize, seed: u64) -> Halton {
+        let tables = tables::PermutationTables::new(randomize == HaltonRandomize::PermuteDigits);
+        Halton {
+            randomize,
+            seed,
+            tables,
+        }
+    }
+
+    /// The randomization.
+    pub fn randomize(&self) -> HaltonRandomize {
+        self.randomize
+    }
+
+    /// The seed.
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// `Ok` if `dim` is a dimension of the sequence (`dim < NUM_DIMENSIONS`).
+    pub fn check_dimension(dim: u32) -> Result<(), Error> {
+        if dim < NUM_DIMENSIONS {
+            Ok(())
+        } else {
+            Err(Error::DimensionOutOfRange {
+                dimension: u64::from(dim),
+                available: u64::from(NUM_DIMENSIONS),
+            })
+        }
+    }
+
+    /// Point `index` of dimension `dim` in `[0, 1)`.
+    ///
+    /// # Panics
+    /// If `dim >= NUM_DIMENSIONS`; use [`Halton::try_sample`] or
+    /// [`Halton::check_dimension`] to validate first.
+    #[inline]
+    pub fn sample(&self, index: u64, dim: u32) -> f64 {
+        fixed64_to_f64(self.sample_fixed64(index, dim))
+    }
+
+    /// [`Halton::sample`], or an error for a dimension out of range.
+    pub fn try_sample(&self, index: u64, dim: u32) -> Result<f64, Error> {
+        Self::check_dimension(dim)?;
+        Ok(self.sample(index, dim))
+    }
+
+    /// The 32-bit digit word `floor(x * 2^32)` of point `index`, dimension `dim`.
+    ///
+    /// # Panics
+    /// If `dim >= NUM_DIMENSIONS`.
+    #[inline]
+    pub fn sample_word(&self, index: u64, dim: u32) -> u32 {
+        (self.sample_fixed64(index, dim) >> 32) as u32
+    }
+
+    /// [`Halton::sample_word`], or an error for a dimension out of range.
+    pub fn try_sample_word(&self, index: u64, dim: u32) -> Result<u32, Error> {
+        Self::check_dimension(dim)?;
+        Ok(self.sample_word(index, dim))
+    }
+
+    /// `floor(x * 2^64)` for point `index` of dimension `dim`, exact.
+    ///
+    /// # Panics
+    /// If `dim >= NUM_DIMENSIONS`.
+    pub fn sample_fixed64(&self, index: u64, dim: u32) -> u64 {
+        let base = &BASES[dim as usize];
+        match self.randomize {
+            HaltonRandomize::None => unscrambled(index, base),
+            HaltonRandomize::PermuteDigits => {
+                let seed = derive_seed(self.seed, SALT_PERMUTE);
+                self.tables
+                    .with_dimension(seed, dim, |perms| permuted(index, base, perms))
+            }
+            HaltonRandomize::Owen => owen(
+                index,
+                base,
+                hash2(derive_seed(self.seed, SALT_OWEN), u64::from(dim)),
+            ),
+        }
+    }
+}
+
+/// Salt separating the digit-permutation seeds from other uses of a seed.
+const SALT_PERMUTE: u64 = 0x4841_4c54_4f4e_5050; // "HALTONPP"
+/// Salt separating the Owen-scramble seeds from other uses of a seed.
+const SALT_OWEN: u64 = 0x4841_4c54_4f4e_4f57; // "HALTONOW"
+
+/// The index residue whose radical inverse starts with given digits:
+/// `digits` read as a `ndigits`-digit base-`base` integer (first digit after
+/// the point most significant) is mirrored back, so that for every index `i`
+/// with `i mod base^ndigits` equal to the result, `floor(x_i * base^ndigits)`
+/// equals `digits`. Digits of `digits` beyond `ndigits` are ignored. A base
+/// below 2 has no digits: the result is 0.
+pub fn inverse_radical_inverse(digits: u64, base: u32, ndigits: u32) -> u64 {
+    if base < 2 {
+        return 0;
+    }
+    let b = u64::from(base);
+    let (mut rest, mut index) = (digits, 0u64);
+    for _ in 0..ndigits {
+        index = index.wrapping_mul(b).wrapping_add(rest % b);
+        rest /= b;
+    }
+    index
+}
+
+/// The unscrambled radical inverse, `floor(x * 2^64)`.
+fn unscrambled(index: u64, base: &Base) -> u64 {
+    if base.b == 2 {
+        return index.reverse_bits();
+    }
+    let mut digits = [0u32; MAX_DIGITS];
+    let n = base.digits(index, &mut digits);
+    base.fixed64(&digits[..n])
+}
+
+/// Digits of `index` scrambled by per-position permutation tables
+/// (`perms[i * base + a]` is the image of digit `a` at position `i`), over
+/// all `base.scrambled` positions.
+fn permuted(index: u64, base: &Base, perms: &[u16]) -> u64 {
+    let b = base.b as usize;
+    if b == 2 {
+        // Position i either keeps or flips bit 63 - i of the mirrored index.
+        let flips = (0..64).fold(0u64, |m, i| m | (u64::from(perms[2 * i]) << (63 - i)));
+        return index.reverse_bits() ^ flips;
+    }
+    let mut digits = [0u32; MAX_DIGITS];
+    base.digits(index, &mut digits);
+    let k = base.scrambled as usize;
+    for (i, d) in digits[..k].iter_mut().enumerate() {
+        *d = u32::from(perms[i * b + *d as usize]);
+    }
+    base.fixed64(&digits[..k])
+}
+
+/// Advances the Owen key chain past digit `digit`.
+#[inline]
+fn next_key(key: u64, digit: u32) -> u64 {
+    mix64(key ^ u64::from(digit + 1).wrapping_mul(0x9e37_79b9_7f4a_7c15))
+}
+
+/// Digits of `index` scrambled by nested affine permutations (see the
+/// module documentation). `key` is the per-dimension seed; it is extended by
+/// a hash chain over the digits, so the key of position `i` depends on the
+/// seed and on exactly the digits `a_0..a_{i-1}`. From a key, the pair
+/// `(m - 1, c)` is `floor(key * b (b - 1) / 2^64)` split as `(q, r)` by `b`.
+fn owen(index: u64, base: &Base, mut key: u64) -> u64 {
+    if base.b == 2 {
+        // m = 1 and c = the key's top bit: digit i is flipped by it.
+        let mut out = 0u64;
+        for i in 0..64 {
+            let digit = ((index >> i) & 1) as u32;
+            out |= u64::from(digit ^ (key >> 63) as u32) << (63 - i);
+            key = next_key(key, digit);
+        }
+        return out;
+    }
+    let b = base.b;
+    let choices = u128::from(b * (b - 1));
+    let mut digits = [0u32; MAX_DIGITS];
+    base.digits(index, &mut digits);
+    let k = base.scrambled as usize;
+    for d in digits[..k].iter_mut() {
+        let pick = ((u128::from(key) * choices) >> 64) as u32;
+        let q = base.div(pick);
+        let (mult, add) = (1 + q, pick - q * b);
+        let digit = *d;
+        *d = base.rem(mult * digit + add);
+        key = next_key(key, digit);
+    }
+    base.fixed64(&digits[..k])
+}
+
+/// A 64-bit fixed-point fraction to the nearest `f64`, kept below 1.
+#[inline]
+fn fixed64_to_f64(fixed: u64) -> f64 {
+    (fixed as f64 * (1.0 / 18_446_744_073_709_551_616.0)).min(ONE_MINUS_EPSILON_F64)
+}

@@ -30,13 +30,19 @@ pub trait PixelSampler {
 }
 
 mod global_sobol;
+mod halton;
+mod independent;
 mod padded_sobol;
 mod sampler;
+mod stratified;
 mod zsobol;
 
 pub use global_sobol::{GlobalSobolMode, GlobalSobolSampler};
+pub use halton::HaltonSampler;
+pub use independent::IndependentSampler;
 pub use padded_sobol::{PaddedSobolSampler, permutation_element};
 pub use sampler::Sampler;
+pub use stratified::StratifiedSampler;
 pub use zsobol::ZSobolSampler;
 
 use crate::Randomize;

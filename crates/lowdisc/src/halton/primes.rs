@@ -1,0 +1,100 @@
+//! The prime bases of the Halton sequence, computed at compile time.
+//!
+//! [`PRIMES`] holds the first [`NUM_DIMENSIONS`] primes (2, 3, 5, ..., 8161),
+//! produced by a `const fn` trial-division sieve, so no table is committed.
+//! Dimension `d` of the Halton sequence uses base `PRIMES[d]`.
+//!
+//! For each base the module also fixes the number of digits the randomized
+//! sequences scramble, [`scrambled_digits`]: the smallest `K` with
+//! `b^K >= 2^64`, so the digits left out weigh less than `b^-K <= 2^-64`.
+
+/// The number of Halton dimensions (one per prime base).
+pub const NUM_DIMENSIONS: u32 = 1024;
+
+/// The first [`NUM_DIMENSIONS`] primes, in increasing order.
+pub const PRIMES: [u32; NUM_DIMENSIONS as usize] = first_primes();
+
+/// Finds the first `NUM_DIMENSIONS` primes by trial division by the primes
+/// already found (only those up to the square root of the candidate).
+const fn first_primes() -> [u32; NUM_DIMENSIONS as usize] {
+    let mut primes = [0u32; NUM_DIMENSIONS as usize];
+    let mut count = 0usize;
+    let mut candidate = 2u32;
+    while count < primes.len() {
+        let mut is_prime = true;
+        let mut i = 0usize;
+        while i < count {
+            let p = primes[i];
+            if p * p > candidate {
+                break;
+            }
+            if candidate % p == 0 {
+                is_prime = false;
+                break;
+            }
+            i += 1;
+        }
+        if is_prime {
+            primes[count] = candidate;
+            count += 1;
+        }
+        candidate += 1;
+    }
+    primes
+}
+
+/// The smallest `K` with `base^K >= 2^64`: how many digits the randomized
+/// Halton variants scramble in base `base` (64 for base 2, 41 for base 3,
+/// 5 for base 8161).
+pub const fn scrambled_digits(base: u32) -> u32 {
+    let mut power: u128 = 1;
+    let mut digits = 0u32;
+    while power < (1u128 << 64) {
+        power *= base as u128;
+        digits += 1;
+    }
+    digits
+}
+
+/// The base of Halton dimension `dim`, or `None` if `dim >= NUM_DIMENSIONS`.
+#[inline]
+pub fn prime(dim: u32) -> Option<u32> {
+    PRIMES.get(dim as usize).copied()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Brute-force primality, independent of the sieve above.
+    fn is_prime(n: u32) -> bool {
+        n >= 2 && (2..n).take_while(|d| d * d <= n).all(|d| n % d != 0)
+    }
+
+    #[test]
+    fn table_holds_exactly_the_first_primes() {
+        let brute: alloc::vec::Vec<u32> = (2..)
+            .filter(|&n| is_prime(n))
+            .take(NUM_DIMENSIONS as usize)
+            .collect();
+        assert_eq!(&PRIMES[..], &brute[..]);
+        // Well-known values: the 1000th prime is 7919, the 1024th 8161.
+        assert_eq!(PRIMES[999], 7919);
+        assert_eq!(PRIMES[1023], 8161);
+        assert_eq!(prime(0), Some(2));
+        assert_eq!(prime(NUM_DIMENSIONS), None);
+    }
+
+    #[test]
+    fn digit_counts_cover_64_bits() {
+        assert_eq!(scrambled_digits(2), 64);
+        assert_eq!(scrambled_digits(3), 41); // 3^40 < 2^64 <= 3^41
+        assert_eq!(scrambled_digits(8161), 5);
+        for &b in PRIMES.iter() {
+            let k = scrambled_digits(b);
+            let full = (b as u128).pow(k);
+            let less = (b as u128).pow(k - 1);
+            assert!(full >= 1 << 64 && less < 1 << 64, "base {b}");
+        }
+    }
+}
