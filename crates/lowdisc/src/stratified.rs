@@ -42,7 +42,8 @@ pub fn grid_shape(n: u32) -> (u32, u32) {
 
 /// `n` jittered points in `dims` dimensions, point-major (value `d` of point
 /// `k` at `k * dims + d`); see the module documentation. Empty if `n` or
-/// `dims` is 0.
+/// `dims` is 0. Allocates `n * dims` values (plus `n` cells): callers taking
+/// `n` and `dims` from users should bound them first.
 pub fn jittered_points(n: u32, dims: u32, seed: u64) -> Vec<f64> {
     let (n_us, dims_us) = (n as usize, dims as usize);
     let mut out = alloc::vec![0.0; n_us * dims_us];

@@ -270,6 +270,18 @@ fn inverse_radical_inverse_finds_the_pixel_residue() {
 }
 
 #[test]
+fn randomization_names_round_trip() {
+    for r in HaltonRandomize::ALL {
+        assert_eq!(HaltonRandomize::from_name(r.name()), Some(r));
+    }
+    assert_eq!(
+        HaltonRandomize::from_name("owen"),
+        Some(HaltonRandomize::Owen)
+    );
+    assert_eq!(HaltonRandomize::from_name("sobol"), None);
+}
+
+#[test]
 fn dimension_errors() {
     let h = Halton::new(HaltonRandomize::Owen, 1);
     assert!(h.try_sample(3, NUM_DIMENSIONS - 1).is_ok());

@@ -18,11 +18,7 @@ fn pixel_of(index: u64, exponents: [u32; 2]) -> [u64; 2] {
     [mirrored(2, exponents[0]), mirrored(3, exponents[1])]
 }
 
-const ALL: [HaltonRandomize; 3] = [
-    HaltonRandomize::None,
-    HaltonRandomize::PermuteDigits,
-    HaltonRandomize::Owen,
-];
+const ALL: [HaltonRandomize; 3] = HaltonRandomize::ALL;
 
 #[test]
 fn inverses_and_crt() {
