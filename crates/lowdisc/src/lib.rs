@@ -25,6 +25,7 @@
 
 extern crate alloc;
 
+pub mod catalog;
 pub mod error;
 pub mod halton;
 pub mod hash;

@@ -3,25 +3,35 @@
 //! Send + Sync` value without trait objects. Build one from a
 //! [`crate::catalog::SamplerConfig`].
 
-use super::{GlobalSobolSampler, PaddedSobolSampler, PixelSampler, ZSobolSampler};
+use super::{
+    GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler, PixelSampler,
+    StratifiedSampler, ZSobolSampler,
+};
 
 /// Every pixel sampler of the crate.
 #[derive(Debug, Clone)]
 pub enum Sampler {
+    /// Independent uniform random numbers.
+    Independent(IndependentSampler),
+    /// Jittered stratified samples.
+    Stratified(StratifiedSampler),
+    /// Global image-plane Halton (pbrt).
+    Halton(HaltonSampler),
     /// Global image-plane Sobol (pbrt-v3), plain, randomized or paper-permuted.
     GlobalSobol(GlobalSobolSampler),
     /// Padded per-pixel Sobol (pbrt-v4).
     PaddedSobol(PaddedSobolSampler),
     /// Z-order blue-noise Sobol (pbrt-v4's default).
     ZSobol(ZSobolSampler),
-    // TODO(A1): Independent, Stratified and Halton variants once
-    // pixel/independent.rs, pixel/stratified.rs and pixel/halton.rs exist.
 }
 
 /// Applies `$body` to the sampler inside whatever variant `$s` is.
 macro_rules! dispatch {
     ($s:expr, $inner:ident => $body:expr) => {
         match $s {
+            Sampler::Independent($inner) => $body,
+            Sampler::Stratified($inner) => $body,
+            Sampler::Halton($inner) => $body,
             Sampler::GlobalSobol($inner) => $body,
             Sampler::PaddedSobol($inner) => $body,
             Sampler::ZSobol($inner) => $body,
@@ -79,5 +89,23 @@ impl From<PaddedSobolSampler> for Sampler {
 impl From<ZSobolSampler> for Sampler {
     fn from(s: ZSobolSampler) -> Self {
         Sampler::ZSobol(s)
+    }
+}
+
+impl From<IndependentSampler> for Sampler {
+    fn from(s: IndependentSampler) -> Self {
+        Sampler::Independent(s)
+    }
+}
+
+impl From<StratifiedSampler> for Sampler {
+    fn from(s: StratifiedSampler) -> Self {
+        Sampler::Stratified(s)
+    }
+}
+
+impl From<HaltonSampler> for Sampler {
+    fn from(s: HaltonSampler) -> Self {
+        Sampler::Halton(s)
     }
 }

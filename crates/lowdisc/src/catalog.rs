@@ -1,0 +1,262 @@
+//! The catalog of named samplers: what the CLI and the renderer accept as
+//! `--sampler NAME`, a validated configuration that builds the pixel
+//! [`Sampler`], and a *points mode* ([`generate_points`]) that emits the raw
+//! sequence behind each name.
+//!
+//! | name | pixel sampler | points mode |
+//! |---|---|---|
+//! | `independent` | independent PCG32 | stream = dimension, offset = index |
+//! | `stratified` | jittered strata | jittered points |
+//! | `halton` | Halton, random digit permutations | same sequence |
+//! | `halton-owen` | Halton, Owen-scrambled | same sequence |
+//! | `sobol` | pbrt-v3 global Sobol, unscrambled | Sobol sequence |
+//! | `sobol-xor` | global Sobol, random digital shift | XOR-scrambled Sobol |
+//! | `sobol-owen` | global Sobol, exact Owen | Owen-scrambled Sobol |
+//! | `sobol-fast-owen` | global Sobol, fast Owen | fast-Owen Sobol |
+//! | `paper` | global Sobol, paper permutation, literal stream | same |
+//! | `paper-repro` | global Sobol, paper permutation, hashed | same |
+//! | `padded-sobol` | pbrt-v4 padded Sobol (Owen) | pixel (0,0) of a 1x1 image |
+//! | `zsobol` | pbrt-v4 Z-order Sobol (fast Owen) | pixel (0,0) of a 1x1 image |
+
+mod points;
+
+use core::fmt;
+use core::str::FromStr;
+
+use crate::halton::HaltonRandomize;
+use crate::paper::check_threshold;
+use crate::pixel::{
+    GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
+    Sampler, StratifiedSampler, ZSobolSampler,
+};
+use crate::{Error, Randomize};
+
+pub use points::{MAX_POINT_WORDS, Order, generate_points};
+
+/// The largest image side a configuration accepts.
+pub const MAX_RESOLUTION: u32 = 1 << 20;
+
+/// The samplers the catalog knows, by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SamplerName {
+    /// `independent`: independent uniform random numbers (PCG32).
+    Independent,
+    /// `stratified`: jittered stratified samples.
+    Stratified,
+    /// `halton`: Halton with random digit permutations.
+    Halton,
+    /// `halton-owen`: Owen-scrambled Halton.
+    HaltonOwen,
+    /// `sobol`: unscrambled Sobol (pixel: pbrt-v3 global sampler).
+    Sobol,
+    /// `sobol-xor`: Sobol with a random digital shift.
+    SobolXor,
+    /// `sobol-owen`: Sobol with exact Owen scrambling.
+    SobolOwen,
+    /// `sobol-fast-owen`: Sobol with fast hash-based Owen scrambling.
+    SobolFastOwen,
+    /// `paper`: the paper's permuted Sobol, literal (one sequential stream).
+    Paper,
+    /// `paper-repro`: the paper's permuted Sobol, reproducible (hashed draws).
+    PaperRepro,
+    /// `padded-sobol`: pbrt-v4's padded per-pixel Owen-scrambled Sobol.
+    PaddedSobol,
+    /// `zsobol`: pbrt-v4's Z-order blue-noise Sobol.
+    ZSobol,
+}
+
+impl SamplerName {
+    /// Every name, in the order the documentation lists them.
+    pub const ALL: [SamplerName; 12] = [
+        SamplerName::Independent,
+        SamplerName::Stratified,
+        SamplerName::Halton,
+        SamplerName::HaltonOwen,
+        SamplerName::Sobol,
+        SamplerName::SobolXor,
+        SamplerName::SobolOwen,
+        SamplerName::SobolFastOwen,
+        SamplerName::Paper,
+        SamplerName::PaperRepro,
+        SamplerName::PaddedSobol,
+        SamplerName::ZSobol,
+    ];
+
+    /// The name as written on the command line.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SamplerName::Independent => "independent",
+            SamplerName::Stratified => "stratified",
+            SamplerName::Halton => "halton",
+            SamplerName::HaltonOwen => "halton-owen",
+            SamplerName::Sobol => "sobol",
+            SamplerName::SobolXor => "sobol-xor",
+            SamplerName::SobolOwen => "sobol-owen",
+            SamplerName::SobolFastOwen => "sobol-fast-owen",
+            SamplerName::Paper => "paper",
+            SamplerName::PaperRepro => "paper-repro",
+            SamplerName::PaddedSobol => "padded-sobol",
+            SamplerName::ZSobol => "zsobol",
+        }
+    }
+
+    /// A one-line description.
+    pub fn description(self) -> &'static str {
+        match self {
+            SamplerName::Independent => "independent uniform random numbers (seeded PCG32)",
+            SamplerName::Stratified => "jittered stratified samples",
+            SamplerName::Halton => "Halton sequence with random digit permutations",
+            SamplerName::HaltonOwen => "Halton sequence with Owen scrambling",
+            SamplerName::Sobol => "unscrambled Sobol (Joe-Kuo); pixels: pbrt-v3 global sampler",
+            SamplerName::SobolXor => "Sobol with a random digital shift (XOR)",
+            SamplerName::SobolOwen => "Sobol with exact Owen (nested uniform) scrambling",
+            SamplerName::SobolFastOwen => "Sobol with fast hash-based Owen scrambling",
+            SamplerName::Paper => "Song & Ro permuted Sobol, literal: one sequential stream",
+            SamplerName::PaperRepro => "Song & Ro permuted Sobol, reproducible: hashed draws",
+            SamplerName::PaddedSobol => "pbrt-v4 padded per-pixel Owen-scrambled Sobol",
+            SamplerName::ZSobol => "pbrt-v4 Z-order blue-noise Sobol (Ahmed & Wonka 2020)",
+        }
+    }
+
+    /// Whether the name is a Sobol sequence indexed like Sobol's (the
+    /// `sobol*` and `paper*` names), for which [`Order::Gray`] applies.
+    pub fn is_sobol_family(self) -> bool {
+        matches!(
+            self,
+            SamplerName::Sobol
+                | SamplerName::SobolXor
+                | SamplerName::SobolOwen
+                | SamplerName::SobolFastOwen
+                | SamplerName::Paper
+                | SamplerName::PaperRepro
+        )
+    }
+
+    /// The randomization of the `sobol*` names (`None` for others).
+    pub fn sobol_randomize(self, seed: u64) -> Option<Randomize> {
+        match self {
+            SamplerName::Sobol => Some(Randomize::None),
+            SamplerName::SobolXor => Some(Randomize::Xor { seed }),
+            SamplerName::SobolOwen => Some(Randomize::Owen { seed }),
+            SamplerName::SobolFastOwen => Some(Randomize::FastOwen { seed }),
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Display for SamplerName {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl FromStr for SamplerName {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Self, Error> {
+        SamplerName::ALL
+            .into_iter()
+            .find(|n| n.as_str() == s)
+            .ok_or_else(|| Error::UnknownSampler(s.into()))
+    }
+}
+
+/// Everything needed to build a named sampler.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SamplerConfig {
+    /// Which sampler.
+    pub name: SamplerName,
+    /// Seed of every random choice.
+    pub seed: u64,
+    /// The paper permutation's threshold in `[0, 1]`: the probability that a
+    /// column is left unflipped (default 0.5).
+    pub threshold: f64,
+    /// Let the paper permutation act on dimensions 0-1 too (pixel samplers).
+    pub paper_all_dims: bool,
+    /// Samples per pixel.
+    pub spp: u32,
+    /// Image width and height in pixels.
+    pub resolution: [u32; 2],
+}
+
+impl SamplerConfig {
+    /// The default threshold: each column flipped with probability 1/2.
+    pub const DEFAULT_THRESHOLD: f64 = 0.5;
+
+    /// A configuration with defaults: seed 0, threshold 0.5, permutation on
+    /// dimensions >= 2 only, 16 samples per pixel, a 2x2 image (the paper's
+    /// figure).
+    pub fn new(name: SamplerName) -> Self {
+        SamplerConfig {
+            name,
+            seed: 0,
+            threshold: Self::DEFAULT_THRESHOLD,
+            paper_all_dims: false,
+            spp: 16,
+            resolution: [2, 2],
+        }
+    }
+
+    /// Checks the fields every sampler needs: `spp >= 1`, a threshold in
+    /// `[0, 1]` (NaN rejected), sides in `1..=MAX_RESOLUTION`.
+    pub fn validate(&self) -> Result<(), Error> {
+        if self.spp == 0 {
+            return Err(Error::InvalidSampleCount {
+                count: 0,
+                reason: "at least one sample per pixel is needed",
+            });
+        }
+        check_threshold(self.threshold)?;
+        let [w, h] = self.resolution;
+        if w == 0 || h == 0 || w > MAX_RESOLUTION || h > MAX_RESOLUTION {
+            return Err(Error::InvalidResolution {
+                width: w,
+                height: h,
+                reason: "each side must be between 1 and 1048576 pixels",
+            });
+        }
+        Ok(())
+    }
+
+    /// Builds the pixel sampler, validating every field and the index range
+    /// of the chosen sampler.
+    pub fn build(&self) -> Result<Sampler, Error> {
+        self.validate()?;
+        let (spp, res, seed) = (self.spp, self.resolution, self.seed);
+        let (threshold, all_dims) = (self.threshold, self.paper_all_dims);
+        let global = |mode| GlobalSobolSampler::new(spp, res, mode, seed).map(Sampler::from);
+        match self.name {
+            SamplerName::Independent => IndependentSampler::new(spp, seed).map(Sampler::from),
+            SamplerName::Stratified => StratifiedSampler::new(spp, seed).map(Sampler::from),
+            SamplerName::Halton => {
+                HaltonSampler::new(spp, res, HaltonRandomize::PermuteDigits, seed)
+                    .map(Sampler::from)
+            }
+            SamplerName::HaltonOwen => {
+                HaltonSampler::new(spp, res, HaltonRandomize::Owen, seed).map(Sampler::from)
+            }
+            SamplerName::Sobol
+            | SamplerName::SobolXor
+            | SamplerName::SobolOwen
+            | SamplerName::SobolFastOwen => {
+                let r = self.name.sobol_randomize(0).unwrap_or_default();
+                global(GlobalSobolMode::Randomize(r))
+            }
+            SamplerName::Paper => global(GlobalSobolMode::PaperLiteral {
+                threshold,
+                all_dims,
+            }),
+            SamplerName::PaperRepro => global(GlobalSobolMode::PaperReproducible {
+                threshold,
+                all_dims,
+            }),
+            SamplerName::PaddedSobol => {
+                PaddedSobolSampler::new(spp, Randomize::Owen { seed: 0 }, seed).map(Sampler::from)
+            }
+            SamplerName::ZSobol => {
+                ZSobolSampler::new(spp, res, Randomize::FastOwen { seed: 0 }, seed)
+                    .map(Sampler::from)
+            }
+        }
+    }
+}

@@ -1,0 +1,222 @@
+//! Points mode: the raw sequence behind each catalog name, as 32-bit digit
+//! words (`floor(x * 2^32)`), point-major.
+//!
+//! * `sobol*`: the Sobol sequence with that randomization (seeded by the
+//!   config seed). [`Order::Gray`] is the order of Joe & Kuo's generator and
+//!   `scipy.stats.qmc.Sobol` (point `k` is natural point `gray_code(k)`);
+//!   [`Order::Natural`] is `sobol::sample(k, d)`.
+//! * `paper`: the literal permuted Sobol over the same indices, with one
+//!   stream (seeded by the config seed) consumed point-major, dimensions in
+//!   the order of the range, so the words depend on the range asked for.
+//!   `paper-repro`: hashed draws, independent of the range and order.
+//! * `halton`, `halton-owen`: the Halton sequence with random digit
+//!   permutations / Owen scrambling; `independent`: stream = dimension,
+//!   offset = point index; `stratified`: `stratified::jittered_points` over
+//!   dimensions `0..end`, sliced to the range.
+//! * `padded-sobol`, `zsobol` are pixel samplers: their points are the `n`
+//!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
+//!   the in-pixel offset, dimensions `2j + 2, 2j + 3` the `get_2d` pair at
+//!   sampler dimension `2j` (so a dimension's value does not depend on the
+//!   range asked for).
+//!
+//! Only the Sobol family uses the order; the others ignore it.
+
+use alloc::vec::Vec;
+use core::ops::Range;
+
+use super::{SamplerConfig, SamplerName};
+use crate::halton::{self, Halton, HaltonRandomize};
+use crate::independent::Independent;
+use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
+use crate::pixel::{PaddedSobolSampler, PixelSampler, ZSobolSampler};
+use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
+use crate::{Error, Randomize, stratified};
+
+/// The most words one call may return (`n * dims.len()`), 1 GiB of output.
+pub const MAX_POINT_WORDS: u64 = 1 << 28;
+
+/// The order in which the Sobol family's points are emitted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Order {
+    /// Gray-code order (Joe-Kuo, scipy): point `k` is natural point `k ^ (k >> 1)`.
+    #[default]
+    Gray,
+    /// Sobol's natural order: point `k` is index `k`.
+    Natural,
+}
+
+/// The first `n` points of `config.name`'s sequence in dimensions `dims`,
+/// point-major (`out[k * dims.len() + j]` is dimension `dims.start + j` of
+/// point `k`); see the module documentation. Only `name`, `seed` and
+/// `threshold` of the config are used.
+pub fn generate_points(
+    config: &SamplerConfig,
+    n: u32,
+    dims: Range<u32>,
+    order: Order,
+) -> Result<Vec<u32>, Error> {
+    let name = config.name;
+    if n == 0 {
+        return Err(Error::InvalidSampleCount {
+            count: 0,
+            reason: "at least one point is needed",
+        });
+    }
+    let available = match name {
+        SamplerName::Halton | SamplerName::HaltonOwen => u64::from(halton::NUM_DIMENSIONS),
+        n if n.is_sobol_family() => NUM_DIMENSIONS as u64,
+        _ => u64::from(u32::MAX),
+    };
+    if dims.is_empty() || u64::from(dims.end) > available {
+        let dimension = if dims.is_empty() {
+            dims.start
+        } else {
+            dims.end - 1
+        };
+        return Err(Error::DimensionOutOfRange {
+            dimension: u64::from(dimension),
+            available,
+        });
+    }
+    check_threshold(config.threshold)?;
+    let width = dims.len();
+    if u64::from(n) * width as u64 > MAX_POINT_WORDS {
+        return Err(Error::InvalidSampleCount {
+            count: u64::from(n),
+            reason: "n times the number of dimensions exceeds 2^28 words; generate in batches",
+        });
+    }
+    let seed = config.seed;
+    let index = |k: u32| match order {
+        Order::Gray => gray_code(k),
+        Order::Natural => k,
+    };
+    let mut out = Vec::with_capacity(n as usize * width);
+    match name {
+        SamplerName::Sobol if order == Order::Gray => {
+            let mut batch = GrayCodeBatch::new(dims.start, width as u32)?;
+            out.resize(n as usize * width, 0);
+            batch.fill(&mut out);
+        }
+        SamplerName::Sobol
+        | SamplerName::SobolXor
+        | SamplerName::SobolOwen
+        | SamplerName::SobolFastOwen => {
+            let r = name.sobol_randomize(seed).unwrap_or(Randomize::None);
+            for k in 0..n {
+                out.extend(dims.clone().map(|d| sample_randomized(index(k), d, r)));
+            }
+        }
+        SamplerName::Paper => {
+            let mut stream = PaperLiteral::new(config.threshold, Some(seed))?;
+            for k in 0..n {
+                out.extend(dims.clone().map(|d| stream.sample(index(k), d)));
+            }
+        }
+        SamplerName::PaperRepro => {
+            for k in 0..n {
+                out.extend(
+                    dims.clone()
+                        .map(|d| paper_reproducible(index(k), d, config.threshold, seed)),
+                );
+            }
+        }
+        SamplerName::Halton | SamplerName::HaltonOwen => {
+            let kind = if name == SamplerName::Halton {
+                HaltonRandomize::PermuteDigits
+            } else {
+                HaltonRandomize::Owen
+            };
+            let seq = Halton::new(kind, seed);
+            for k in 0..n {
+                out.extend(dims.clone().map(|d| seq.sample_word(u64::from(k), d)));
+            }
+        }
+        SamplerName::Independent => {
+            let seq = Independent::new(seed);
+            for k in 0..n {
+                out.extend(
+                    dims.clone()
+                        .map(|d| seq.sample_u32(u64::from(d), u64::from(k))),
+                );
+            }
+        }
+        SamplerName::Stratified => {
+            if u64::from(n) * u64::from(dims.end) > MAX_POINT_WORDS {
+                return Err(Error::InvalidSampleCount {
+                    count: u64::from(n),
+                    reason: "stratified points are generated from dimension 0: n * dims.end exceeds 2^28",
+                });
+            }
+            let all = stratified::jittered_points(n, dims.end, seed);
+            for point in all.chunks_exact(dims.end as usize) {
+                out.extend(point[dims.start as usize..].iter().map(|&x| word_of(x)));
+            }
+        }
+        SamplerName::PaddedSobol => {
+            let mut s = PaddedSobolSampler::new(n, Randomize::Owen { seed: 0 }, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::ZSobol => {
+            let mut s = ZSobolSampler::new(n, [1, 1], Randomize::FastOwen { seed: 0 }, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+    }
+    Ok(out)
+}
+
+/// `floor(x * 2^32)` for `x` in `[0, 1)` (saturating at the ends).
+fn word_of(x: f64) -> u32 {
+    (x * 4_294_967_296.0) as u32
+}
+
+/// Word-level access to the hashed pixel samplers.
+trait WordSampler: PixelSampler {
+    fn pixel_words(&mut self) -> [u32; 2];
+    fn words_2d(&mut self) -> [u32; 2];
+}
+
+impl WordSampler for PaddedSobolSampler {
+    fn pixel_words(&mut self) -> [u32; 2] {
+        self.get_pixel_2d_words()
+    }
+    fn words_2d(&mut self) -> [u32; 2] {
+        self.get_2d_words()
+    }
+}
+
+impl WordSampler for ZSobolSampler {
+    fn pixel_words(&mut self) -> [u32; 2] {
+        self.get_pixel_2d_words()
+    }
+    fn words_2d(&mut self) -> [u32; 2] {
+        self.get_2d_words()
+    }
+}
+
+/// The samples of pixel (0,0) as points (see the module documentation).
+fn pixel_points(s: &mut impl WordSampler, n: u32, dims: Range<u32>, out: &mut Vec<u32>) {
+    for k in 0..n {
+        s.start_pixel_sample([0, 0], k, 0);
+        let offset = s.pixel_words();
+        let mut pair: Option<(u32, [u32; 2])> = None;
+        for d in dims.clone() {
+            let word = if d < 2 {
+                offset[d as usize]
+            } else {
+                let first = (d - 2) & !1;
+                let words = match pair {
+                    Some((f, w)) if f == first => w,
+                    _ => {
+                        s.start_pixel_sample([0, 0], k, first);
+                        let w = s.words_2d();
+                        pair = Some((first, w));
+                        w
+                    }
+                };
+                words[((d - 2) & 1) as usize]
+            };
+            out.push(word);
+        }
+    }
+}

@@ -1,0 +1,404 @@
+//! The sampler catalog: names, configuration checks, pinned sampler values
+//! and pinned points for every name.
+
+use lowdisc::Error;
+use lowdisc::catalog::{Order, SamplerConfig, SamplerName, generate_points};
+use lowdisc::pixel::{PixelSampler, Sampler};
+use lowdisc::sobol::{NUM_DIMENSIONS, gray_code, sample};
+
+fn config(name: SamplerName) -> SamplerConfig {
+    let mut c = SamplerConfig::new(name);
+    c.seed = 7;
+    c.spp = 4;
+    c.resolution = [3, 2];
+    c
+}
+
+#[test]
+fn names_round_trip_and_are_distinct() {
+    let names: Vec<String> = SamplerName::ALL.iter().map(|n| n.to_string()).collect();
+    for (i, n) in SamplerName::ALL.iter().enumerate() {
+        assert_eq!(names[i].parse::<SamplerName>(), Ok(*n));
+        assert!(!n.description().is_empty());
+        assert!(names[..i].iter().all(|m| *m != names[i]));
+    }
+    assert_eq!(names.len(), 12);
+    assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
+    assert_eq!(
+        "Sobol".parse::<SamplerName>(),
+        Err(Error::UnknownSampler("Sobol".into()))
+    );
+    assert_eq!(
+        "".parse::<SamplerName>(),
+        Err(Error::UnknownSampler(String::new()))
+    );
+}
+
+#[test]
+fn the_sampler_enum_is_clone_send_sync() {
+    fn check<T: Clone + Send + Sync>() {}
+    check::<Sampler>();
+    check::<SamplerConfig>();
+}
+
+/// Pinned values (value stability): pixel (2, 1), sample 3 of a 3x2 image at
+/// 4 spp, seed 7: `get_pixel_2d`, `get_1d`, `get_2d`.
+const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
+    (
+        SamplerName::Independent,
+        [0.055089355, 0.44098055, 0.65988755, 0.4078462, 0.13679874],
+    ),
+    (
+        SamplerName::Stratified,
+        [0.40988052, 0.14772975, 0.8622967, 0.43879992, 0.028814077],
+    ),
+    (
+        SamplerName::Halton,
+        [0.8488812, 0.6436839, 0.66558754, 0.39425474, 0.043714345],
+    ),
+    (
+        SamplerName::HaltonOwen,
+        [0.60834163, 0.5105626, 0.12933487, 0.48620975, 0.9102565],
+    ),
+    (
+        SamplerName::Sobol,
+        [0.6875, 0.5625, 0.328125, 0.171875, 0.515625],
+    ),
+    (
+        SamplerName::SobolXor,
+        [0.5125425, 0.29913533, 0.21024513, 0.9915904, 0.874925],
+    ),
+    (
+        SamplerName::SobolOwen,
+        [0.72907305, 0.56740224, 0.31326675, 0.71075207, 0.4819647],
+    ),
+    (
+        SamplerName::SobolFastOwen,
+        [0.86813724, 0.19409573, 0.25333405, 0.6156316, 0.36899823],
+    ),
+    (
+        SamplerName::Paper,
+        [0.6875, 0.5625, 0.328125, 0.921875, 0.73437494],
+    ),
+    (
+        SamplerName::PaperRepro,
+        [0.6875, 0.5625, 0.17187494, 0.921875, 0.515625],
+    ),
+    (
+        SamplerName::PaddedSobol,
+        [0.58683896, 0.98619604, 0.27414453, 0.98357207, 0.077943206],
+    ),
+    (
+        SamplerName::ZSobol,
+        [0.65799886, 0.89639354, 0.45493573, 0.69660795, 0.2677477],
+    ),
+];
+
+#[test]
+fn pinned_sampler_values() {
+    assert_eq!(PINNED_SAMPLERS.len(), SamplerName::ALL.len());
+    for &(name, want) in PINNED_SAMPLERS {
+        let mut s = config(name).build().unwrap();
+        assert_eq!(s.samples_per_pixel(), 4);
+        s.start_pixel_sample([2, 1], 3, 0);
+        let [a, b] = s.get_pixel_2d();
+        let c = s.get_1d();
+        let [d, e] = s.get_2d();
+        assert_eq!([a, b, c, d, e], want, "{name}");
+    }
+}
+
+#[test]
+fn unscrambled_sobol_pixel_sample_is_the_sequence_point() {
+    // 3x2 image -> R = 4 (k = 2); the offset is x R - px for the index in use.
+    let mut s = config(SamplerName::Sobol).build().unwrap();
+    let Sampler::GlobalSobol(g) = &mut s else {
+        panic!("sobol builds the global sampler")
+    };
+    g.start_pixel_sample([2, 1], 3, 0);
+    let i = g.sample_index();
+    let x = sample(i, 0) as f64 / 2f64.powi(32) * 4.0 - 2.0;
+    let y = sample(i, 1) as f64 / 2f64.powi(32) * 4.0 - 1.0;
+    assert_eq!(g.get_pixel_2d(), [x as f32, y as f32]);
+    assert_eq!(g.get_1d(), sample(i, 2) as f32 / 2f32.powi(32));
+}
+
+/// Pinned points (value stability): seed 7, the first 4 points in Gray
+/// order, dimensions 0..3.
+const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
+    (
+        SamplerName::Independent,
+        [
+            0x50e272b0, 0xc795f2b7, 0x9320dcb1, 0xbd5a26a3, 0x6f7af2b2, 0xcf3bbb5f, 0x0a785080,
+            0xdab141f6, 0x3f27edf4, 0xde644be7, 0x8db6faaf, 0x842cf7b7,
+        ],
+    ),
+    (
+        SamplerName::Stratified,
+        [
+            0x2e6e98c5, 0x798838ab, 0x10b1f8d5, 0xefa636ac, 0x67cc8f5c, 0x5f3a5c9f, 0x1b27219a,
+            0xdbe7c02c, 0xbf55b0e3, 0xa8ff11d9, 0xa5a04697, 0xd47dc87d,
+        ],
+    ),
+    (
+        SamplerName::Halton,
+        [
+            0x49504766, 0x6269a7e8, 0x2338f0a5, 0xc9504766, 0xb7befd3e, 0x566c23d9, 0x09504766,
+            0x0d145293, 0xbcd28a3f, 0x89504766, 0x9b4d3621, 0x899f570c,
+        ],
+    ),
+    (
+        SamplerName::HaltonOwen,
+        [
+            0x2c8072b7, 0xa6b858d1, 0xa341dbab, 0x8de4b4c2, 0x31b9a890, 0xe5e27464, 0x53bd1d16,
+            0xc7848659, 0x046ba26a, 0xefd51b7a, 0x872d797c, 0x589a0ae1,
+        ],
+    ),
+    // scipy.stats.qmc.Sobol(3, scramble=False): [0,0,0], [.5,.5,.5], [.75,.25,.25], [.25,.75,.75].
+    (
+        SamplerName::Sobol,
+        [
+            0x00000000, 0x00000000, 0x00000000, 0x80000000, 0x80000000, 0x80000000, 0xc0000000,
+            0x40000000, 0x40000000, 0x40000000, 0xc0000000, 0xc0000000,
+        ],
+    ),
+    (
+        SamplerName::SobolXor,
+        [
+            0xef891f64, 0xe700b270, 0x6ac2a53a, 0x6f891f64, 0x6700b270, 0xeac2a53a, 0x2f891f64,
+            0xa700b270, 0x2ac2a53a, 0xaf891f64, 0x2700b270, 0xaac2a53a,
+        ],
+    ),
+    (
+        SamplerName::SobolOwen,
+        [
+            0x113ab8f4, 0xaef89253, 0xaf37d463, 0x8ded71bf, 0x001e6c8c, 0x1e385e7a, 0xc5251871,
+            0xe242a89d, 0xda803a34, 0x79f6f2d4, 0x69eba34c, 0x6099c52b,
+        ],
+    ),
+    (
+        SamplerName::SobolFastOwen,
+        [
+            0x34851310, 0x09762fb2, 0x4eab80bf, 0x935f3d13, 0xb2eefefb, 0x89c8ef4d, 0xcc2422b9,
+            0x5003b49c, 0x0af32eec, 0x73751ec4, 0xfb806984, 0xe09e2e42,
+        ],
+    ),
+    (
+        SamplerName::Paper,
+        [
+            0x00000000, 0x00000000, 0x00000000, 0x7fffffff, 0x80000000, 0x80000000, 0x40000000,
+            0xbfffffff, 0xbfffffff, 0x40000000, 0xc0000000, 0x3fffffff,
+        ],
+    ),
+    (
+        SamplerName::PaperRepro,
+        [
+            0x00000000, 0x00000000, 0x00000000, 0x80000000, 0x80000000, 0x80000000, 0xc0000000,
+            0xbfffffff, 0xbfffffff, 0x40000000, 0x3fffffff, 0xc0000000,
+        ],
+    ),
+    (
+        SamplerName::PaddedSobol,
+        [
+            0xe069c999, 0xfc91353b, 0xab70e9e8, 0x37f5f676, 0x296b6092, 0x02ff0210, 0x4aa44e78,
+            0x89ab3cba, 0xf5452b5b, 0x82ab33c5, 0x515bdd4e, 0x652e63b3,
+        ],
+    ),
+    (
+        SamplerName::ZSobol,
+        [
+            0xec7c869e, 0x3e2df071, 0x2f487c0d, 0x5ef17c4b, 0x836ddfb5, 0xbe0bd932, 0x9ba78a8e,
+            0xddfc08e5, 0x557fab77, 0x2a352fca, 0x72af9b6c, 0xcc81e442,
+        ],
+    ),
+];
+
+#[test]
+fn pinned_points_for_every_name() {
+    assert_eq!(PINNED_POINTS.len(), SamplerName::ALL.len());
+    for &(name, want) in PINNED_POINTS {
+        let got = generate_points(&config(name), 4, 0..3, Order::Gray).unwrap();
+        assert_eq!(got, want, "{name}");
+    }
+}
+
+#[test]
+fn points_orders_and_ranges_agree() {
+    let c = config(SamplerName::Sobol);
+    let gray = generate_points(&c, 64, 5..9, Order::Gray).unwrap();
+    let natural = generate_points(&c, 64, 5..9, Order::Natural).unwrap();
+    for k in 0..64u32 {
+        for d in 5..9u32 {
+            let j = (k * 4 + d - 5) as usize;
+            assert_eq!(gray[j], sample(gray_code(k), d));
+            assert_eq!(natural[j], sample(k, d));
+        }
+    }
+    // Names other than the Sobol family ignore the order; hashed ones give
+    // each dimension the same value whatever range it is asked in.
+    for name in [
+        SamplerName::Halton,
+        SamplerName::PaperRepro,
+        SamplerName::PaddedSobol,
+        SamplerName::ZSobol,
+    ] {
+        let c = config(name);
+        let wide = generate_points(&c, 8, 0..6, Order::Natural).unwrap();
+        let narrow = generate_points(&c, 8, 3..5, Order::Natural).unwrap();
+        for k in 0..8 {
+            assert_eq!(
+                narrow[2 * k..2 * k + 2],
+                wide[6 * k + 3..6 * k + 5],
+                "{name}"
+            );
+        }
+    }
+    let h = config(SamplerName::Halton);
+    assert_eq!(
+        generate_points(&h, 8, 0..2, Order::Gray).unwrap(),
+        generate_points(&h, 8, 0..2, Order::Natural).unwrap()
+    );
+}
+
+#[test]
+fn literal_paper_points_with_threshold_one_are_sobol() {
+    let mut c = config(SamplerName::Paper);
+    c.threshold = 1.0;
+    let sobol = config(SamplerName::Sobol);
+    for order in [Order::Gray, Order::Natural] {
+        assert_eq!(
+            generate_points(&c, 100, 0..7, order).unwrap(),
+            generate_points(&sobol, 100, 0..7, order).unwrap()
+        );
+    }
+}
+
+#[test]
+fn bad_points_requests_are_errors() {
+    let c = config(SamplerName::Sobol);
+    let n = NUM_DIMENSIONS as u32;
+    assert!(matches!(
+        generate_points(&c, 0, 0..2, Order::Gray),
+        Err(Error::InvalidSampleCount { count: 0, .. })
+    ));
+    assert!(matches!(
+        generate_points(&c, 4, 3..3, Order::Gray),
+        Err(Error::DimensionOutOfRange { .. })
+    ));
+    assert_eq!(
+        generate_points(&c, 4, n - 1..n + 1, Order::Gray),
+        Err(Error::DimensionOutOfRange {
+            dimension: u64::from(n),
+            available: u64::from(n)
+        })
+    );
+    assert!(generate_points(&c, 4, n - 2..n, Order::Gray).is_ok());
+    let h = config(SamplerName::HaltonOwen);
+    let hn = lowdisc::halton::NUM_DIMENSIONS;
+    assert!(matches!(
+        generate_points(&h, 4, 0..hn + 1, Order::Gray),
+        Err(Error::DimensionOutOfRange { .. })
+    ));
+    let mut p = config(SamplerName::PaperRepro);
+    for t in [f64::NAN, -0.01, 1.01] {
+        p.threshold = t;
+        assert!(matches!(
+            generate_points(&p, 4, 0..2, Order::Gray),
+            Err(Error::ThresholdOutOfRange(_))
+        ));
+    }
+    assert!(matches!(
+        generate_points(&c, u32::MAX, 0..1000, Order::Gray),
+        Err(Error::InvalidSampleCount { .. })
+    ));
+}
+
+#[test]
+fn bad_configurations_are_errors() {
+    for name in SamplerName::ALL {
+        let mut c = config(name);
+        c.spp = 0;
+        assert!(
+            matches!(c.build(), Err(Error::InvalidSampleCount { count: 0, .. })),
+            "{name}"
+        );
+        let mut c = config(name);
+        c.threshold = f64::NAN;
+        assert!(
+            matches!(c.build(), Err(Error::ThresholdOutOfRange(_))),
+            "{name}"
+        );
+        for res in [[0, 5], [5, 0], [1 << 21, 3]] {
+            let mut c = config(name);
+            c.resolution = res;
+            assert!(
+                matches!(c.build(), Err(Error::InvalidResolution { .. })),
+                "{name} {res:?}"
+            );
+        }
+    }
+    // Global Sobol: R^2 * spp must fit in 32 bits (4096^2 * 256 = 2^32 fits).
+    let mut c = config(SamplerName::SobolOwen);
+    c.resolution = [4000, 3000];
+    c.spp = 256;
+    assert!(c.build().is_ok());
+    c.spp = 257;
+    assert!(matches!(
+        c.build(),
+        Err(Error::InvalidSampleCount { count: 257, .. })
+    ));
+    // Z-order Sobol: 64-bit indices.
+    let mut z = config(SamplerName::ZSobol);
+    z.resolution = [1 << 20, 1 << 20];
+    z.spp = 1 << 24;
+    assert!(z.build().is_ok());
+    z.spp = (1 << 24) + 1;
+    assert!(matches!(z.build(), Err(Error::InvalidSampleCount { .. })));
+}
+
+#[test]
+fn with_stream_reseeds_only_stateful_samplers() {
+    let values = |s: &mut Sampler| {
+        s.start_pixel_sample([1, 0], 2, 0);
+        [s.get_1d(), s.get_1d(), s.get_1d(), s.get_1d()]
+    };
+    for name in SamplerName::ALL {
+        let Ok(s) = config(name).build() else {
+            continue;
+        };
+        let (mut a, mut b, mut c) = (s.with_stream(1), s.with_stream(1), s.with_stream(2));
+        let (va, vb, vc) = (values(&mut a), values(&mut b), values(&mut c));
+        assert_eq!(va, vb, "{name}");
+        if name == SamplerName::Paper {
+            assert_ne!(va, vc, "{name}");
+        } else {
+            assert_eq!(va, vc, "{name}");
+        }
+    }
+}
+
+#[test]
+fn every_sampler_keeps_every_value_in_the_unit_interval() {
+    // Offsets in [0, 1) mean every sample lies in its pixel (film position =
+    // pixel + offset); non-square, non-power-of-two images and counts.
+    for name in SamplerName::ALL {
+        for (res, spp) in [([1, 1], 1), ([3, 5], 3), ([17, 9], 16), ([33, 2], 5)] {
+            let mut c = config(name);
+            c.resolution = res;
+            c.spp = spp;
+            c.paper_all_dims = spp == 5;
+            let mut s = c.build().unwrap();
+            for y in 0..res[1] {
+                for x in 0..res[0] {
+                    for i in 0..spp {
+                        s.start_pixel_sample([x, y], i, 0);
+                        let [a, b] = s.get_pixel_2d();
+                        let [d, e] = s.get_2d();
+                        let v = [a, b, s.get_1d(), d, e, s.get_1d()];
+                        assert!(v.iter().all(|x| (0.0..1.0).contains(x)), "{name} {v:?}");
+                    }
+                }
+            }
+        }
+    }
+}
