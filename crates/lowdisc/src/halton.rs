@@ -197,7 +197,7 @@ impl Halton {
             HaltonRandomize::PermuteDigits => {
                 let seed = derive_seed(self.seed, SALT_PERMUTE);
                 self.tables
-                    .with_dimension(seed, dim, |perms| permuted(index, base, perms))
+                    .with_dimension(seed, dim, |tables| permuted(index, base, tables))
             }
             HaltonRandomize::Owen => owen(
                 index,
@@ -242,23 +242,23 @@ fn unscrambled(index: u64, base: &Base) -> u64 {
     base.fixed64(&digits[..n])
 }
 
-/// Digits of `index` scrambled by per-position permutation tables
-/// (`perms[i * base + a]` is the image of digit `a` at position `i`), over
-/// all `base.scrambled` positions.
-fn permuted(index: u64, base: &Base, perms: &[u16]) -> u64 {
+/// Digits of `index` scrambled by the per-position permutation tables of
+/// its dimension, over all `base.scrambled` positions: the index's own `n`
+/// digits are mapped through the tables and continued by the precomputed
+/// tail of scrambled zeros after position `n`.
+fn permuted(index: u64, base: &Base, tables: &tables::DimensionTables) -> u64 {
+    if base.b == 2 {
+        // Position i flips bit 63 - i of the mirrored index or keeps it; the
+        // all-zero tail from position 0 is exactly the mask of flips.
+        return index.reverse_bits() ^ tables.tails[0];
+    }
     let b = base.b as usize;
-    if b == 2 {
-        // Position i either keeps or flips bit 63 - i of the mirrored index.
-        let flips = (0..64).fold(0u64, |m, i| m | (u64::from(perms[2 * i]) << (63 - i)));
-        return index.reverse_bits() ^ flips;
-    }
     let mut digits = [0u32; MAX_DIGITS];
-    base.digits(index, &mut digits);
-    let k = base.scrambled as usize;
-    for (i, d) in digits[..k].iter_mut().enumerate() {
-        *d = u32::from(perms[i * b + *d as usize]);
+    let n = base.digits(index, &mut digits);
+    for (i, d) in digits[..n].iter_mut().enumerate() {
+        *d = u32::from(tables.perms[i * b + *d as usize]);
     }
-    base.fixed64(&digits[..k])
+    base.fixed64_with_tail(&digits[..n], tables.tails[n])
 }
 
 /// Advances the Owen key chain past digit `digit`.

@@ -96,8 +96,16 @@ impl Base {
     /// `floor(x * 2^64)` for `x = sum_i digits[i] b^-(i+1)` (exact).
     #[inline]
     pub fn fixed64(&self, digits: &[u32]) -> u64 {
+        self.fixed64_with_tail(digits, 0)
+    }
+
+    /// `floor(x * 2^64)` for `x = sum_{i < n} digits[i] b^-(i+1) + t b^-n`,
+    /// where `n = digits.len()` and `tail = floor(t * 2^64)` for a tail value
+    /// `t` in `[0, 1)` (exact, by the nested-floor identity).
+    #[inline]
+    pub fn fixed64_with_tail(&self, digits: &[u32], tail: u64) -> u64 {
         let g = self.chunk_digits as usize;
-        let (mut x, mut end) = (0u64, digits.len());
+        let (mut x, mut end) = (tail, digits.len());
         while end > 0 {
             let start = end.saturating_sub(g);
             let (mut chunk, mut power) = (0u64, 1u64);
@@ -169,6 +177,23 @@ mod tests {
         }
         assert_eq!(BASES[0].chunk_digits, 31);
         assert_eq!(BASES[1].chunk_digits, 20);
+    }
+
+    /// Continuing from a tail's value equals evaluating all digits at once.
+    #[test]
+    fn tails_continue_exactly() {
+        let mut rng = Pcg32::new(8, 9);
+        for base in [&BASES[0], &BASES[1], &BASES[7], &BASES[1023]] {
+            let k = base.scrambled as usize;
+            let digits: alloc::vec::Vec<u32> = (0..k).map(|_| rng.next_u32() % base.b).collect();
+            for m in 0..=k {
+                let tail = base.fixed64(&digits[m..]);
+                assert_eq!(
+                    base.fixed64_with_tail(&digits[..m], tail),
+                    base.fixed64(&digits)
+                );
+            }
+        }
     }
 
     #[test]

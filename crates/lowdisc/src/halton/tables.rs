@@ -2,7 +2,8 @@
 //!
 //! Dimension `d` (base `b`, `K = scrambled_digits(b)` positions) owns `K`
 //! uniformly random permutations of `0..b`, stored position-major in one
-//! `u16` slice of `K * b` entries (`b <= 8161` fits `u16`). They are drawn by
+//! `u16` slice of `K * b` entries (`b <= 8161` fits `u16`), with the values
+//! of their scrambled zero tails (`K + 1` words). They are drawn by
 //! Fisher-Yates shuffles from one PCG32 stream seeded by `hash(seed, d)`, so
 //! each dimension's tables can be built alone, in any order.
 //!
@@ -14,27 +15,44 @@
 
 use alloc::vec::Vec;
 
+use super::digits::BASES;
 use super::primes::{NUM_DIMENSIONS, PRIMES, scrambled_digits};
 use crate::hash::{bounded, hash2};
 use crate::pcg::Pcg32;
 
-/// Builds the `K * b` permutation entries of dimension `dim`.
-pub(super) fn build(seed: u64, dim: u32) -> Vec<u16> {
+/// The permutations of one dimension and the values of their zero tails.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(super) struct DimensionTables {
+    /// `perms[i * b + a]`: the image of digit `a` at position `i < K`.
+    pub perms: Vec<u16>,
+    /// `tails[m] = floor(2^64 * sum_{m <= i < K} pi_i(0) b^-(i - m + 1))`,
+    /// `m = 0..=K`: the scrambled zero digits past an index's `m` digits,
+    /// as the Horner state a value's `m` leading digits continue from.
+    pub tails: Vec<u64>,
+}
+
+/// Builds the `K * b` permutation entries of dimension `dim` and their tails.
+pub(super) fn build(seed: u64, dim: u32) -> DimensionTables {
     let base = PRIMES[dim as usize] as usize;
     let positions = scrambled_digits(base as u32) as usize;
     let mut rng = Pcg32::new(hash2(seed, u64::from(dim)), u64::from(dim));
-    let mut table = Vec::with_capacity(positions * base);
+    let mut perms = Vec::with_capacity(positions * base);
     for _ in 0..positions {
-        let start = table.len();
-        table.extend(0..base as u16);
-        let perm = &mut table[start..];
+        let start = perms.len();
+        perms.extend(0..base as u16);
+        let perm = &mut perms[start..];
         for i in (1..base).rev() {
             let bits = (u64::from(rng.next_u32()) << 32) | u64::from(rng.next_u32());
             let j = bounded(bits, i as u64 + 1) as usize;
             perm.swap(i, j);
         }
     }
-    table
+    let zero_images: Vec<u32> = (0..positions).map(|i| u32::from(perms[i * base])).collect();
+    let digits = &BASES[dim as usize];
+    let tails = (0..=positions)
+        .map(|m| digits.fixed64(&zero_images[m..]))
+        .collect();
+    DimensionTables { perms, tails }
 }
 
 /// Lazily built permutation tables for every dimension (or none, for the
@@ -42,7 +60,7 @@ pub(super) fn build(seed: u64, dim: u32) -> Vec<u16> {
 #[derive(Clone)]
 pub(super) struct PermutationTables {
     #[cfg(feature = "std")]
-    slots: alloc::sync::Arc<[std::sync::OnceLock<Vec<u16>>]>,
+    slots: alloc::sync::Arc<[std::sync::OnceLock<DimensionTables>]>,
 }
 
 impl PermutationTables {
@@ -51,7 +69,7 @@ impl PermutationTables {
         #[cfg(feature = "std")]
         {
             let count = if used { NUM_DIMENSIONS as usize } else { 0 };
-            let slots: Vec<std::sync::OnceLock<Vec<u16>>> =
+            let slots: Vec<std::sync::OnceLock<DimensionTables>> =
                 (0..count).map(|_| std::sync::OnceLock::new()).collect();
             PermutationTables {
                 slots: slots.into(),
@@ -66,7 +84,12 @@ impl PermutationTables {
 
     /// Runs `f` on the tables of dimension `dim`, building them if needed.
     /// `seed` must be the same on every call for one `PermutationTables`.
-    pub(super) fn with_dimension<R>(&self, seed: u64, dim: u32, f: impl FnOnce(&[u16]) -> R) -> R {
+    pub(super) fn with_dimension<R>(
+        &self,
+        seed: u64,
+        dim: u32,
+        f: impl FnOnce(&DimensionTables) -> R,
+    ) -> R {
         #[cfg(feature = "std")]
         {
             f(self.slots[dim as usize].get_or_init(|| build(seed, dim)))
@@ -86,7 +109,7 @@ mod tests {
     fn every_position_holds_a_permutation() {
         for dim in [0u32, 1, 2, 17, 500, NUM_DIMENSIONS - 1] {
             let base = PRIMES[dim as usize] as usize;
-            let table = build(9, dim);
+            let table = build(9, dim).perms;
             assert_eq!(table.len(), base * scrambled_digits(base as u32) as usize);
             for perm in table.chunks(base) {
                 let mut seen = alloc::vec![false; base];
@@ -100,7 +123,7 @@ mod tests {
 
     #[test]
     fn positions_and_seeds_get_different_permutations() {
-        let table = build(1, 4); // base 11
+        let table = build(1, 4).perms; // base 11
         let base = 11;
         assert_ne!(table[..base], table[base..2 * base]);
         assert_ne!(build(1, 4), build(2, 4));
@@ -112,7 +135,7 @@ mod tests {
         let tables = PermutationTables::new(true);
         let copy = tables.clone();
         let direct = build(5, 3);
-        assert!(tables.with_dimension(5, 3, |t| t == &direct[..]));
-        assert!(copy.with_dimension(5, 3, |t| t == &direct[..]));
+        assert!(tables.with_dimension(5, 3, |t| t == &direct));
+        assert!(copy.with_dimension(5, 3, |t| t == &direct));
     }
 }

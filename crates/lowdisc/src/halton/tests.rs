@@ -94,7 +94,7 @@ fn permuted_digits_are_the_table_images_of_all_positions() {
     for dim in [0u32, 1, 2, 30, 1023] {
         let base = PRIMES[dim as usize];
         let k = scrambled_digits(base) as usize;
-        let table = tables::build(derive_seed(seed, SALT_PERMUTE), dim);
+        let table = tables::build(derive_seed(seed, SALT_PERMUTE), dim).perms;
         for index in [0u64, 1, 2, 12345, u64::MAX] {
             let digits: Vec<u64> = index_digits(index, u64::from(base), k)
                 .iter()
