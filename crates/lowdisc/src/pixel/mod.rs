@@ -67,5 +67,9 @@ pub(crate) fn reseed(randomize: Randomize, seed: u64) -> Randomize {
 
 /// The smallest `k` with `2^k >= n` (`n >= 1`).
 pub(crate) fn ceil_log2(n: u64) -> u32 {
-    if n <= 1 { 0 } else { 64 - (n - 1).leading_zeros() }
+    if n <= 1 {
+        0
+    } else {
+        64 - (n - 1).leading_zeros()
+    }
 }
