@@ -137,8 +137,8 @@ fn four_dimensional_sampling_equals_one_dimensional() {
     for r in strategies() {
         for index in [0u32, 1, 5, 1 << 16, 0xdead_beef] {
             let four = sample_4d(index, 8, r);
-            for k in 0..4 {
-                assert_eq!(four[k], sample_randomized(index, 8 + k as u32, r));
+            for (k, &value) in four.iter().enumerate() {
+                assert_eq!(value, sample_randomized(index, 8 + k as u32, r));
             }
         }
     }
