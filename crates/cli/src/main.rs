@@ -1,2 +1,72 @@
-//! The `lowdisc` command-line tool (in progress).
-fn main() {}
+//! The `lowdisc` command-line tool.
+//!
+//! `main` parses the arguments with clap, turns the chosen subcommand's
+//! arguments into a validated configuration (`into_config`), and runs it.
+//! Every failure ends as one line `error: ...` on stderr and exit status 1
+//! (clap's own usage errors exit with 2); a closed output pipe (`| head`)
+//! ends quietly with status 0.
+//!
+//! Adding a subcommand: a new module with an `Args` struct (clap derive),
+//! `into_config` and `run`, plus one variant in [`Command`] and one arm in
+//! [`run`].
+
+mod figure;
+mod output;
+mod parse;
+mod plots;
+mod points;
+
+use std::io;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Low-discrepancy sample sequences for Monte Carlo rendering.
+#[derive(Debug, Parser)]
+#[command(name = "lowdisc", version, about, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// The subcommands; each variant holds its module's clap arguments.
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Print (or plot) the points of a sequence, or the samples of one pixel.
+    Points(points::PointsArgs),
+    /// Draw the paper's figure: a 2x2-pixel image's samples, one panel per sampler.
+    Figure(figure::FigureArgs),
+}
+
+/// Validates the subcommand's arguments and runs it.
+fn run(command: Command) -> anyhow::Result<()> {
+    match command {
+        Command::Points(args) => {
+            let config = args.into_config()?;
+            points::run(&config, io::stdout().lock())
+        }
+        Command::Figure(args) => figure::run(&args.into_config()?),
+    }
+}
+
+/// Whether the error is a write to a closed pipe.
+fn is_broken_pipe(err: &anyhow::Error) -> bool {
+    err.chain().any(|cause| {
+        cause
+            .downcast_ref::<io::Error>()
+            .is_some_and(|e| e.kind() == io::ErrorKind::BrokenPipe)
+    })
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(err) if is_broken_pipe(&err) => ExitCode::SUCCESS,
+        Err(err) => {
+            let message = format!("{err:#}").replace('\n', " ");
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,258 @@
+//! `lowdisc points`: print (or plot) the points of a named sequence, or the
+//! samples a pixel sampler gives one pixel.
+
+use std::io::Write;
+use std::ops::Range;
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use clap::{Args, ValueEnum};
+use lowdisc::catalog::{Order, SamplerConfig, generate_points};
+use lowdisc::pixel::PixelSampler;
+
+use crate::output::{Format, TableWriter};
+use crate::{parse, plots};
+
+/// Point order for the Sobol family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OrderArg {
+    /// Gray-code order, as Joe & Kuo's generator and scipy.stats.qmc.Sobol.
+    Gray,
+    /// Sobol's natural order (point k uses index k), as pbrt.
+    Natural,
+}
+
+/// Print points of a sequence, or the samples of one pixel.
+///
+/// Sequence mode (default): prints the first N points of the sampler's
+/// sequence in dimensions 0..D (or A..B), one point per line. The Sobol
+/// family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro)
+/// prints in Gray-code order by default, so
+/// `lowdisc points --sampler sobol --n 65536 --dims 1024 --format u32`
+/// prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)
+/// .random(65536) as the integers floor(x * 2^32). padded-sobol and zsobol
+/// print the samples of pixel (0,0) of a 1x1 image with N samples per pixel.
+///
+/// Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a
+/// --res image, prints the film position (X + ox, Y + oy), where (ox, oy) is
+/// get_pixel_2d, followed by --dims further values taken as get_2d pairs (and
+/// one get_1d for an odd last value), starting at sampler dimension 0.
+///
+/// --plot FILE.png|FILE.svg draws instead of printing: the first two
+/// dimensions of the points (with a grid of 2^ceil(m/2) x 2^floor(m/2) cells,
+/// m = floor(log2 N): a (0,m,2)-net has one point per cell), or in pixel mode
+/// the film positions inside the pixel.
+#[derive(Debug, Args)]
+pub struct PointsArgs {
+    /// Sampler name: independent, stratified, halton, halton-owen, sobol,
+    /// sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro,
+    /// padded-sobol, zsobol.
+    #[arg(long, short = 's', value_name = "NAME")]
+    sampler: String,
+    /// Seed of every random choice.
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Number of points (sequence mode) [default: 16].
+    #[arg(long, short = 'n', value_name = "N", conflicts_with = "pixel")]
+    n: Option<u32>,
+    /// Number of dimensions 0..D [default: 2; pixel mode: further values, default 0].
+    #[arg(long, value_name = "D", conflicts_with = "dim_range")]
+    dims: Option<u32>,
+    /// Dimensions A up to but excluding B (sequence mode).
+    #[arg(
+        long,
+        value_name = "A..B",
+        conflicts_with = "pixel",
+        allow_hyphen_values = true
+    )]
+    dim_range: Option<String>,
+    /// Paper permutation threshold in [0,1]: probability a matrix column is left unflipped.
+    #[arg(long, default_value_t = SamplerConfig::DEFAULT_THRESHOLD, allow_negative_numbers = true)]
+    threshold: f64,
+    /// Let the paper permutation act on dimensions 0-1 too (pixel samplers).
+    #[arg(long)]
+    paper_all_dims: bool,
+    /// Point order of the Sobol family [default: gray]; other samplers ignore it.
+    #[arg(long, value_enum, conflicts_with = "pixel")]
+    order: Option<OrderArg>,
+    /// Output format.
+    #[arg(long, short = 'f', value_enum, default_value = "text")]
+    format: Format,
+    /// Pixel mode: print the samples of pixel X,Y.
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    pixel: Option<String>,
+    /// Samples per pixel (pixel mode).
+    #[arg(long, default_value_t = 16, requires = "pixel")]
+    spp: u32,
+    /// Image resolution (pixel mode) [default: 2x2].
+    #[arg(
+        long,
+        value_name = "WxH",
+        requires = "pixel",
+        allow_hyphen_values = true
+    )]
+    res: Option<String>,
+    /// Draw the points to FILE.png or FILE.svg instead of printing them.
+    #[arg(long, value_name = "FILE")]
+    plot: Option<PathBuf>,
+}
+
+/// What to print: a validated `points` invocation.
+#[derive(Debug, Clone)]
+pub struct PointsConfig {
+    /// The sampler and its options.
+    sampler: SamplerConfig,
+    /// Sequence or pixel mode.
+    mode: Mode,
+    /// Output format.
+    format: Format,
+    /// Plot file instead of printing.
+    plot: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone)]
+enum Mode {
+    Sequence {
+        n: u32,
+        dims: Range<u32>,
+        order: Order,
+    },
+    Pixel {
+        pixel: [u32; 2],
+        extra_dims: u32,
+    },
+}
+
+impl PointsArgs {
+    /// Checks every option and builds the configuration.
+    pub fn into_config(self) -> Result<PointsConfig> {
+        let mut sampler = parse::sampler_config(
+            &self.sampler,
+            self.seed,
+            self.threshold,
+            self.paper_all_dims,
+        )?;
+        if let Some(plot) = &self.plot {
+            lowdisc_plot::Format::from_path(plot)?;
+        }
+        let mode = if let Some(pixel) = &self.pixel {
+            let pixel = parse::pixel(pixel)?;
+            sampler.resolution = match &self.res {
+                Some(res) => parse::resolution(res)?,
+                None => [2, 2],
+            };
+            sampler.spp = self.spp;
+            if self.spp == 0 {
+                bail!("--spp must be at least 1");
+            }
+            if pixel[0] >= sampler.resolution[0] || pixel[1] >= sampler.resolution[1] {
+                let [w, h] = sampler.resolution;
+                bail!(
+                    "--pixel {},{} is outside the {w}x{h} image (set --res)",
+                    pixel[0],
+                    pixel[1]
+                );
+            }
+            if self.format == Format::U32 {
+                bail!(
+                    "--format u32 is not available in pixel mode (film positions are not digit words)"
+                );
+            }
+            Mode::Pixel {
+                pixel,
+                extra_dims: self.dims.unwrap_or(0),
+            }
+        } else {
+            let n = self.n.unwrap_or(16);
+            if n == 0 {
+                bail!("--n must be at least 1");
+            }
+            let dims = match (&self.dim_range, self.dims) {
+                (Some(range), _) => parse::dim_range(range)?,
+                (None, Some(0)) => bail!("--dims must be at least 1"),
+                (None, d) => 0..d.unwrap_or(2),
+            };
+            let order = match self.order.unwrap_or(OrderArg::Gray) {
+                OrderArg::Gray => Order::Gray,
+                OrderArg::Natural => Order::Natural,
+            };
+            Mode::Sequence { n, dims, order }
+        };
+        Ok(PointsConfig {
+            sampler,
+            mode,
+            format: self.format,
+            plot: self.plot,
+        })
+    }
+}
+
+/// Runs `points`, printing to `out` (or drawing to the plot file).
+pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
+    match &config.mode {
+        Mode::Sequence { n, dims, order } => {
+            let words = generate_points(&config.sampler, *n, dims.clone(), *order)?;
+            let width = dims.len();
+            if let Some(path) = &config.plot {
+                if width < 2 {
+                    bail!("--plot needs at least 2 dimensions");
+                }
+                let points = words
+                    .chunks_exact(width)
+                    .map(|p| [lowdisc::to_f64(p[0]), lowdisc::to_f64(p[1])]);
+                let title = format!(
+                    "{}: {} points, dims {} and {}",
+                    config.sampler.name,
+                    n,
+                    dims.start,
+                    dims.start + 1
+                );
+                return plots::unit_square(&title, points.collect(), *n, path);
+            }
+            let columns: Vec<String> = dims.clone().map(|d| format!("x{d}")).collect();
+            let mut table = TableWriter::new(out, config.format, &columns);
+            for point in words.chunks_exact(width) {
+                table.write_words(point)?;
+            }
+            table.finish()?;
+        }
+        Mode::Pixel { pixel, extra_dims } => {
+            let rows = pixel_samples(&config.sampler, *pixel, *extra_dims)?;
+            if let Some(path) = &config.plot {
+                let positions = rows.iter().map(|r| [r[0], r[1]]).collect();
+                return plots::pixel(&config.sampler, *pixel, positions, path);
+            }
+            let mut columns = vec!["film_x".to_string(), "film_y".to_string()];
+            columns.extend((0..*extra_dims).map(|d| format!("v{d}")));
+            let mut table = TableWriter::new(out, config.format, &columns);
+            for row in &rows {
+                table.write_floats(row)?;
+            }
+            table.finish()?;
+        }
+    }
+    Ok(())
+}
+
+/// The samples of one pixel: film position, then `extra` values from
+/// get_2d pairs (get_1d for an odd last one), sample indices `0..spp`.
+pub fn pixel_samples(config: &SamplerConfig, pixel: [u32; 2], extra: u32) -> Result<Vec<Vec<f64>>> {
+    let mut sampler = config.build()?;
+    let mut rows = Vec::with_capacity(config.spp as usize);
+    for index in 0..config.spp {
+        sampler.start_pixel_sample(pixel, index, 0);
+        let [ox, oy] = sampler.get_pixel_2d();
+        let mut row = Vec::with_capacity(2 + extra as usize);
+        row.push(f64::from(pixel[0]) + f64::from(ox));
+        row.push(f64::from(pixel[1]) + f64::from(oy));
+        for _ in 0..extra / 2 {
+            let [a, b] = sampler.get_2d();
+            row.extend([f64::from(a), f64::from(b)]);
+        }
+        if extra % 2 == 1 {
+            row.push(f64::from(sampler.get_1d()));
+        }
+        rows.push(row);
+    }
+    Ok(rows)
+}
