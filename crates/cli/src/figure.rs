@@ -16,11 +16,15 @@ use crate::{parse, plots};
 /// The image the figure samples: 2x2 pixels, as in the paper.
 const RESOLUTION: [u32; 2] = [2, 2];
 
-/// Draw the paper's figure: film positions of a 2x2-pixel image, one panel per sampler.
-///
-/// Pixels are visited row by row (y, then x) and each pixel's samples in
-/// index order, which fixes the values of the paper's literal sampler, whose
-/// single random stream depends on call order.
+/// The long help of `figure` (`lowdisc figure --help`).
+pub const LONG_ABOUT: &str = "Draw the paper's figure: the film positions of all samples of a 2x2-pixel \
+image, one panel per sampler, side by side, with pixel edges (heavy lines) and the strata of \
+--spp samples (light lines).\n\n\
+Pixels are visited row by row (y, then x) and each pixel's samples in index order, from one \
+sampler, which fixes the values of the paper's literal sampler, whose single random stream \
+depends on call order.";
+
+/// The arguments of `figure`.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
     /// Output file, .png or .svg.

@@ -33,8 +33,10 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Print (or plot) the points of a sequence, or the samples of one pixel.
+    #[command(long_about = points::LONG_ABOUT)]
     Points(points::PointsArgs),
     /// Draw the paper's figure: a 2x2-pixel image's samples, one panel per sampler.
+    #[command(long_about = figure::LONG_ABOUT)]
     Figure(figure::FigureArgs),
 }
 

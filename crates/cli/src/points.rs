@@ -22,26 +22,31 @@ pub enum OrderArg {
     Natural,
 }
 
-/// Print points of a sequence, or the samples of one pixel.
-///
-/// Sequence mode (default): prints the first N points of the sampler's
-/// sequence in dimensions 0..D (or A..B), one point per line. The Sobol
-/// family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro)
-/// prints in Gray-code order by default, so
-/// `lowdisc points --sampler sobol --n 65536 --dims 1024 --format u32`
-/// prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)
-/// .random(65536) as the integers floor(x * 2^32). padded-sobol and zsobol
-/// print the samples of pixel (0,0) of a 1x1 image with N samples per pixel.
-///
-/// Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a
-/// --res image, prints the film position (X + ox, Y + oy), where (ox, oy) is
-/// get_pixel_2d, followed by --dims further values taken as get_2d pairs (and
-/// one get_1d for an odd last value), starting at sampler dimension 0.
-///
-/// --plot FILE.png|FILE.svg draws instead of printing: the first two
-/// dimensions of the points (with a grid of 2^ceil(m/2) x 2^floor(m/2) cells,
-/// m = floor(log2 N): a (0,m,2)-net has one point per cell), or in pixel mode
-/// the film positions inside the pixel.
+/// The long help of `points` (`lowdisc points --help`).
+pub const LONG_ABOUT: &str = "\
+Print points of a sequence, or the samples of one pixel.\n\
+\n\
+Sequence mode (default): prints the first N points of the sampler's\n\
+sequence in dimensions 0..D (or A..B), one point per line. The Sobol\n\
+family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro)\n\
+prints in Gray-code order by default, so\n\
+`lowdisc points --sampler sobol --n 65536 --dims 1024 --format u32`\n\
+prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)\n\
+.random(65536) as the integers floor(x * 2^32). padded-sobol and zsobol\n\
+print the samples of pixel (0,0) of a 1x1 image with N samples per pixel.\n\
+\n\
+Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a\n\
+--res image, prints the film position (X + ox, Y + oy), where (ox, oy) is\n\
+get_pixel_2d, followed by --dims further values taken as get_2d pairs (and\n\
+one get_1d for an odd last value), starting at sampler dimension 0.\n\
+\n\
+--plot FILE.png|FILE.svg draws instead of printing: the first two\n\
+dimensions of the points (with a grid of 2^ceil(m/2) x 2^floor(m/2) cells,\n\
+m = floor(log2 N): a (0,m,2)-net has one point per cell), or in pixel mode\n\
+the film positions inside the pixel.\n\
+";
+
+/// The arguments of `points`.
 #[derive(Debug, Args)]
 pub struct PointsArgs {
     /// Sampler name: independent, stratified, halton, halton-owen, sobol,
