@@ -22,6 +22,12 @@ pub enum OrderArg {
     Natural,
 }
 
+/// The most points `--plot` draws.
+pub const MAX_PLOT_POINTS: u32 = 1 << 20;
+
+/// The most further values per sample in pixel mode.
+pub const MAX_PIXEL_DIMS: u32 = 1 << 16;
+
 /// The long help of `points` (`lowdisc points --help`).
 pub const LONG_ABOUT: &str = "\
 Print points of a sequence, or the samples of one pixel.\n\
@@ -163,10 +169,14 @@ impl PointsArgs {
                     "--format u32 is not available in pixel mode (film positions are not digit words)"
                 );
             }
-            Mode::Pixel {
-                pixel,
-                extra_dims: self.dims.unwrap_or(0),
+            let extra_dims = self.dims.unwrap_or(0);
+            if extra_dims > MAX_PIXEL_DIMS {
+                bail!("--dims must be at most {MAX_PIXEL_DIMS} in pixel mode");
             }
+            if self.plot.is_some() && self.spp > MAX_PLOT_POINTS {
+                bail!("--plot draws at most {MAX_PLOT_POINTS} points; lower --spp");
+            }
+            Mode::Pixel { pixel, extra_dims }
         } else {
             let n = self.n.unwrap_or(16);
             if n == 0 {
@@ -181,6 +191,9 @@ impl PointsArgs {
                 OrderArg::Gray => Order::Gray,
                 OrderArg::Natural => Order::Natural,
             };
+            if self.plot.is_some() && n > MAX_PLOT_POINTS {
+                bail!("--plot draws at most {MAX_PLOT_POINTS} points; lower --n");
+            }
             Mode::Sequence { n, dims, order }
         };
         Ok(PointsConfig {
@@ -222,42 +235,51 @@ pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
             table.finish()?;
         }
         Mode::Pixel { pixel, extra_dims } => {
-            let rows = pixel_samples(&config.sampler, *pixel, *extra_dims)?;
             if let Some(path) = &config.plot {
-                let positions = rows.iter().map(|r| [r[0], r[1]]).collect();
+                let mut positions = Vec::with_capacity(config.sampler.spp as usize);
+                for_each_pixel_sample(&config.sampler, *pixel, 0, |row| {
+                    positions.push([row[0], row[1]]);
+                    Ok(())
+                })?;
                 return plots::pixel(&config.sampler, *pixel, positions, path);
             }
             let mut columns = vec!["film_x".to_string(), "film_y".to_string()];
             columns.extend((0..*extra_dims).map(|d| format!("v{d}")));
             let mut table = TableWriter::new(out, config.format, &columns);
-            for row in &rows {
-                table.write_floats(row)?;
-            }
+            for_each_pixel_sample(&config.sampler, *pixel, *extra_dims, |row| {
+                Ok(table.write_floats(row)?)
+            })?;
             table.finish()?;
         }
     }
     Ok(())
 }
 
-/// The samples of one pixel: film position, then `extra` values from
-/// get_2d pairs (get_1d for an odd last one), sample indices `0..spp`.
-pub fn pixel_samples(config: &SamplerConfig, pixel: [u32; 2], extra: u32) -> Result<Vec<Vec<f64>>> {
+/// Calls `row` with each sample of one pixel, sample indices `0..spp` in
+/// order: the film position, then `extra` values from get_2d pairs (get_1d
+/// for an odd last one), starting at sampler dimension 0.
+pub fn for_each_pixel_sample(
+    config: &SamplerConfig,
+    pixel: [u32; 2],
+    extra: u32,
+    mut row: impl FnMut(&[f64]) -> Result<()>,
+) -> Result<()> {
     let mut sampler = config.build()?;
-    let mut rows = Vec::with_capacity(config.spp as usize);
+    let mut values = Vec::with_capacity(2 + extra as usize);
     for index in 0..config.spp {
+        values.clear();
         sampler.start_pixel_sample(pixel, index, 0);
         let [ox, oy] = sampler.get_pixel_2d();
-        let mut row = Vec::with_capacity(2 + extra as usize);
-        row.push(f64::from(pixel[0]) + f64::from(ox));
-        row.push(f64::from(pixel[1]) + f64::from(oy));
+        values.push(f64::from(pixel[0]) + f64::from(ox));
+        values.push(f64::from(pixel[1]) + f64::from(oy));
         for _ in 0..extra / 2 {
             let [a, b] = sampler.get_2d();
-            row.extend([f64::from(a), f64::from(b)]);
+            values.extend([f64::from(a), f64::from(b)]);
         }
         if extra % 2 == 1 {
-            row.push(f64::from(sampler.get_1d()));
+            values.push(f64::from(sampler.get_1d()));
         }
-        rows.push(row);
+        row(&values)?;
     }
-    Ok(rows)
+    Ok(())
 }

@@ -113,6 +113,44 @@ fn empty_or_reversed_dimension_ranges_are_rejected() {
 #[test]
 fn too_much_output_at_once_is_rejected() {
     fails_with(
+        &[
+            "points",
+            "-s",
+            "sobol",
+            "--n",
+            "2000000",
+            "--plot",
+            "never.png",
+        ],
+        "--plot draws at most",
+    );
+    fails_with(
+        &[
+            "points",
+            "-s",
+            "sobol",
+            "--pixel",
+            "0,0",
+            "--spp",
+            "4000000",
+            "--plot",
+            "never.svg",
+        ],
+        "--plot draws at most",
+    );
+    fails_with(
+        &[
+            "points",
+            "-s",
+            "sobol",
+            "--pixel",
+            "0,0",
+            "--dims",
+            "4000000000",
+        ],
+        "--dims must be at most",
+    );
+    fails_with(
         &["points", "-s", "sobol", "--n", "4294967295", "--dims", "2"],
         "sample count",
     );
