@@ -1,1 +1,37 @@
-//! Point-set quality metrics: star discrepancy (exact and bounds), L2-type discrepancies, minimum distance, spectra. (in progress)
+//! Point-set quality metrics for low-discrepancy samples.
+//!
+//! Every metric takes a validated [`PointSet`] (points in `[0,1]^d`, point-major) and is
+//! one function call, returning plain numbers or a `serde::Serialize` struct, so that a
+//! command-line tool can print a table or JSON directly.
+//!
+//! | metric | function | definition | algorithm | cost |
+//! |---|---|---|---|---|
+//! | star discrepancy, exact | [`star_discrepancy`] | `sup_y |A([0,y))/N − V(y)|` over open and closed anchored boxes | 1-D closed form; 2-D sweep with block upper envelopes; d ≥ 3 DEM-style recursion with a cost guard | `N log N`; `N^{3/2}`; `N^{d−2}/(d−2)!·N^{3/2}` |
+//! | star discrepancy, bounds | [`star_bounds`] | `lower ≤ D* ≤ upper` | random boxes (paper) and threshold accepting; grid bracketing | `K N d`; `R I N d`; `N d + (k+1)^d d` |
+//! | L2-star, CD, WD, MD | [`l2_discrepancy`], [`l2_discrepancies`] | SciPy's formulas and conventions (L2-star as root, others squared) | symmetric pair sum, vectorised, parallel | `N² d / 2` |
+//! | minimum / mean NN distance | [`distance_stats`], [`min_distance`] | Euclidean or toroidal | uniform grid, ring search | about `N·3^d` |
+//! | radial power spectrum (2-D) | [`radial_power_spectrum`] | `|Σ e^{−2πi k·x}|²/N` averaged over rings | separable phases | `N K²` |
+//!
+//! Details, formulas and references are in each module's documentation: [`star`],
+//! [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon; results do not depend
+//! on the thread count except for floating-point summation order (L2 sums, spectra).
+
+pub mod distance;
+mod error;
+pub mod l2;
+mod points;
+pub mod spectrum;
+pub mod star;
+
+pub use distance::{
+    DistanceMetric, DistanceStats, distance_stats, min_distance, nearest_neighbour_distances,
+};
+pub use error::{MetricsError, Result};
+pub use l2::{L2Discrepancies, L2Method, l2_discrepancies, l2_discrepancy};
+pub use points::PointSet;
+pub use spectrum::{RadialSpectrum, radial_power_spectrum};
+pub use star::{
+    BoundsOptions, ExactOptions, StarBounds, estimated_work, grid_upper_bound,
+    random_box_lower_bound, star_bounds, star_discrepancy, star_discrepancy_1d,
+    star_discrepancy_with, threshold_accepting_lower_bound,
+};
