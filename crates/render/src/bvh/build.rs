@@ -1,0 +1,466 @@
+//! Binned-SAH construction (parallel) and depth-first flattening.
+
+use super::{Bvh, BvhStats, MAX_DEPTH, Node};
+use crate::math::{Bounds3, Vec3};
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// Options for [`Bvh::build_with`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BuildOptions {
+    /// SAH bins per split (clamped to 2..=16; fewer for small sets).
+    pub bins: usize,
+    /// Largest leaf; larger sets are always split (clamped to 1..=255).
+    pub max_leaf_prims: usize,
+    /// Subtrees with more primitives than this are built in parallel.
+    pub parallel_threshold: usize,
+}
+
+impl Default for BuildOptions {
+    fn default() -> Self {
+        BuildOptions {
+            bins: 16,
+            max_leaf_prims: 8,
+            parallel_threshold: 4096,
+        }
+    }
+}
+
+/// Depth from which only median splits are made, bounding the tree depth by
+/// `MEDIAN_DEPTH + 32 < MAX_DEPTH` for up to 2^32 primitives.
+const MEDIAN_DEPTH: usize = 56;
+/// pbrt's relative cost of a traversal step.
+const TRAVERSAL_COST: f32 = 0.5;
+
+/// Largest number of SAH bins.
+const MAX_BINS: usize = 16;
+
+#[derive(Clone, Copy)]
+struct BuildPrim {
+    bounds: Bounds3,
+    index: u32,
+}
+
+impl BuildPrim {
+    /// Twice the centroid along `axis` (the factor 2 cancels in all uses).
+    #[inline]
+    fn c2(&self, axis: usize) -> f32 {
+        self.bounds.min[axis] + self.bounds.max[axis]
+    }
+    #[inline]
+    fn centroid2(&self) -> Vec3 {
+        self.bounds.min + self.bounds.max
+    }
+}
+
+/// Box of the primitives and box of their (doubled) centroids.
+#[derive(Clone, Copy)]
+struct Boxes {
+    bounds: Bounds3,
+    cent: Bounds3,
+}
+
+impl Boxes {
+    const EMPTY: Boxes = Boxes {
+        bounds: Bounds3::EMPTY,
+        cent: Bounds3::EMPTY,
+    };
+    #[inline]
+    fn add(&mut self, p: &BuildPrim) {
+        self.bounds = self.bounds.union(&p.bounds);
+        self.cent = self.cent.union_point(p.centroid2());
+    }
+    fn merge(a: Boxes, b: Boxes) -> Boxes {
+        Boxes {
+            bounds: a.bounds.union(&b.bounds),
+            cent: a.cent.union(&b.cent),
+        }
+    }
+    fn of(prims: &[BuildPrim], par: bool) -> Boxes {
+        let fold = |mut acc: Boxes, p: &BuildPrim| {
+            acc.add(p);
+            acc
+        };
+        if par {
+            prims
+                .par_chunks(8192)
+                .map(|ch| ch.iter().fold(Boxes::EMPTY, fold))
+                .reduce(|| Boxes::EMPTY, Boxes::merge)
+        } else {
+            prims.iter().fold(Boxes::EMPTY, fold)
+        }
+    }
+}
+
+/// A subtree: interior nodes above the parallel threshold, flattened
+/// depth-first below it (child indices relative to the vector's start).
+enum BuildNode {
+    Interior {
+        bounds: Bounds3,
+        axis: u8,
+        children: Box<[BuildNode; 2]>,
+    },
+    Flat(Vec<Node>),
+}
+
+enum Split {
+    Leaf,
+    /// Partitioned at `mid` along `axis`, with the two sides' boxes.
+    At {
+        mid: usize,
+        axis: usize,
+        left: Boxes,
+        right: Boxes,
+    },
+}
+
+#[derive(Clone, Copy, Default)]
+struct Summary {
+    nodes: usize,
+    leaves: usize,
+    max_depth: usize,
+}
+
+struct Builder {
+    bins: usize,
+    max_leaf: usize,
+    par: usize,
+}
+
+#[derive(Clone, Copy)]
+struct Bins {
+    count: [u32; MAX_BINS],
+    bounds: [Bounds3; MAX_BINS],
+}
+
+impl Builder {
+    /// Chooses how to split `prims` (whose boxes are `b`), partitioning them.
+    fn split(&self, prims: &mut [BuildPrim], b: &Boxes, depth: usize) -> Split {
+        let n = prims.len();
+        if n == 1 {
+            return Split::Leaf;
+        }
+        let axis = b.cent.max_extent();
+        let (cmin, cext) = (b.cent.min[axis], b.cent.max[axis] - b.cent.min[axis]);
+        if !(cext > 0.0) {
+            // All centroids coincide: a leaf if allowed, else halve.
+            return if n <= self.max_leaf {
+                Split::Leaf
+            } else {
+                self.median(prims, axis)
+            };
+        }
+        if depth >= MEDIAN_DEPTH {
+            return self.median(prims, axis);
+        }
+        let nb = self.bins.min(n.max(2));
+        let scale = nb as f32 / cext;
+        let bin = |p: &BuildPrim| (((p.c2(axis) - cmin) * scale) as usize).min(nb - 1);
+        let fill = |ch: &[BuildPrim]| {
+            let mut acc = Bins {
+                count: [0; MAX_BINS],
+                bounds: [Bounds3::EMPTY; MAX_BINS],
+            };
+            for p in ch {
+                let k = bin(p);
+                acc.count[k] += 1;
+                acc.bounds[k] = acc.bounds[k].union(&p.bounds);
+            }
+            acc
+        };
+        let bins = if n > self.par {
+            prims
+                .par_chunks(8192)
+                .map(fill)
+                .reduce_with(|mut a, o| {
+                    for k in 0..nb {
+                        a.count[k] += o.count[k];
+                        a.bounds[k] = a.bounds[k].union(&o.bounds[k]);
+                    }
+                    a
+                })
+                .unwrap_or_else(|| fill(&[]))
+        } else {
+            fill(prims)
+        };
+        // Sweep: cost of splitting after bin i.
+        let mut right_area = [0.0f32; MAX_BINS];
+        let mut acc = Bounds3::EMPTY;
+        for i in (1..nb).rev() {
+            acc = acc.union(&bins.bounds[i]);
+            right_area[i] = acc.surface_area();
+        }
+        let (mut best, mut best_cost) = (usize::MAX, f32::INFINITY);
+        let (mut left_box, mut left_n, mut right_n) = (Bounds3::EMPTY, 0u32, n as u32);
+        for i in 0..nb - 1 {
+            left_box = left_box.union(&bins.bounds[i]);
+            left_n += bins.count[i];
+            right_n -= bins.count[i];
+            if left_n == 0 || right_n == 0 {
+                continue;
+            }
+            let cost = left_n as f32 * left_box.surface_area() + right_n as f32 * right_area[i + 1];
+            if cost < best_cost {
+                best_cost = cost;
+                best = i;
+            }
+        }
+        if best == usize::MAX {
+            return if n <= self.max_leaf {
+                Split::Leaf
+            } else {
+                self.median(prims, axis)
+            };
+        }
+        let area = b.bounds.surface_area();
+        let split_cost = TRAVERSAL_COST + if area > 0.0 { best_cost / area } else { 0.0 };
+        if n <= self.max_leaf && (n as f32) <= split_cost {
+            return Split::Leaf;
+        }
+        // Partition, gathering both sides' boxes on the way.
+        let (mut left, mut right) = (Boxes::EMPTY, Boxes::EMPTY);
+        let mut mid = 0;
+        for i in 0..n {
+            let p = prims[i];
+            if bin(&p) <= best {
+                left.add(&p);
+                prims.swap(mid, i);
+                mid += 1;
+            } else {
+                right.add(&p);
+            }
+        }
+        Split::At {
+            mid,
+            axis,
+            left,
+            right,
+        }
+    }
+
+    fn median(&self, prims: &mut [BuildPrim], axis: usize) -> Split {
+        let mid = prims.len() / 2;
+        prims.select_nth_unstable_by(mid, |a, b| a.c2(axis).total_cmp(&b.c2(axis)));
+        let par = prims.len() > self.par;
+        Split::At {
+            mid,
+            axis,
+            left: Boxes::of(&prims[..mid], par),
+            right: Boxes::of(&prims[mid..], par),
+        }
+    }
+
+    fn leaf_node(b: &Bounds3, offset: usize, n: usize) -> Node {
+        Node {
+            min: b.min.to_array(),
+            max: b.max.to_array(),
+            offset: offset as u32,
+            count: n as u16,
+            axis: 0,
+            pad: 0,
+        }
+    }
+
+    /// Sequential build appending depth-first nodes to `out` (indices
+    /// relative to `out`'s start); returns the subtree depth.
+    fn build_flat(
+        &self,
+        prims: &mut [BuildPrim],
+        b: &Boxes,
+        offset: usize,
+        depth: usize,
+        out: &mut Vec<Node>,
+    ) -> usize {
+        let idx = out.len();
+        out.push(Self::leaf_node(&b.bounds, offset, prims.len()));
+        match self.split(prims, b, depth) {
+            Split::Leaf => 0,
+            Split::At {
+                mid,
+                axis,
+                left,
+                right,
+            } => {
+                out[idx].count = 0;
+                out[idx].axis = axis as u8;
+                let (lp, rp) = prims.split_at_mut(mid);
+                let dl = self.build_flat(lp, &left, offset, depth + 1, out);
+                out[idx].offset = out.len() as u32;
+                let dr = self.build_flat(rp, &right, offset + mid, depth + 1, out);
+                1 + dl.max(dr)
+            }
+        }
+    }
+
+    fn build(
+        &self,
+        prims: &mut [BuildPrim],
+        b: &Boxes,
+        offset: usize,
+        depth: usize,
+    ) -> (BuildNode, Summary) {
+        if prims.len() <= self.par {
+            let mut out = Vec::with_capacity(prims.len());
+            let d = self.build_flat(prims, b, offset, depth, &mut out);
+            let summary = Summary {
+                nodes: out.len(),
+                leaves: out.iter().filter(|n| n.is_leaf()).count(),
+                max_depth: d,
+            };
+            return (BuildNode::Flat(out), summary);
+        }
+        match self.split(prims, b, depth) {
+            Split::Leaf => {
+                let node = Self::leaf_node(&b.bounds, offset, prims.len());
+                (
+                    BuildNode::Flat(vec![node]),
+                    Summary {
+                        nodes: 1,
+                        leaves: 1,
+                        max_depth: 0,
+                    },
+                )
+            }
+            Split::At {
+                mid,
+                axis,
+                left,
+                right,
+            } => {
+                let (lp, rp) = prims.split_at_mut(mid);
+                let ((l, ls), (r, rs)) = rayon::join(
+                    || self.build(lp, &left, offset, depth + 1),
+                    || self.build(rp, &right, offset + mid, depth + 1),
+                );
+                let summary = Summary {
+                    nodes: 1 + ls.nodes + rs.nodes,
+                    leaves: ls.leaves + rs.leaves,
+                    max_depth: 1 + ls.max_depth.max(rs.max_depth),
+                };
+                (
+                    BuildNode::Interior {
+                        bounds: b.bounds,
+                        axis: axis as u8,
+                        children: Box::new([l, r]),
+                    },
+                    summary,
+                )
+            }
+        }
+    }
+}
+
+fn flatten(node: &BuildNode, nodes: &mut Vec<Node>) {
+    match node {
+        BuildNode::Flat(sub) => {
+            let base = nodes.len() as u32;
+            nodes.extend(sub.iter().map(|n| {
+                let mut n = *n;
+                if !n.is_leaf() {
+                    n.offset += base;
+                }
+                n
+            }));
+        }
+        BuildNode::Interior {
+            bounds,
+            axis,
+            children,
+        } => {
+            let idx = nodes.len();
+            nodes.push(Node {
+                min: bounds.min.to_array(),
+                max: bounds.max.to_array(),
+                offset: 0,
+                count: 0,
+                axis: *axis,
+                pad: 0,
+            });
+            flatten(&children[0], nodes);
+            nodes[idx].offset = nodes.len() as u32;
+            flatten(&children[1], nodes);
+        }
+    }
+}
+
+/// Sum over nodes of `area * cost` for pbrt's SAH model, divided by the root area.
+fn sah_cost(nodes: &[Node]) -> f64 {
+    let area = |n: &Node| {
+        Bounds3 {
+            min: Vec3::from_array(n.min),
+            max: Vec3::from_array(n.max),
+        }
+        .surface_area() as f64
+    };
+    let Some(root) = nodes.first() else {
+        return 0.0;
+    };
+    let ra = area(root);
+    if !(ra > 0.0) {
+        return 0.0;
+    }
+    nodes
+        .iter()
+        .map(|n| {
+            area(n)
+                * if n.is_leaf() {
+                    n.count as f64
+                } else {
+                    TRAVERSAL_COST as f64
+                }
+        })
+        .sum::<f64>()
+        / ra
+}
+
+impl Bvh {
+    /// Builds over primitives given by their boxes with default options.
+    pub fn build(prim_bounds: &[Bounds3]) -> Bvh {
+        Self::build_with(prim_bounds, BuildOptions::default())
+    }
+
+    /// Builds over primitives given by their boxes. Primitives with an empty
+    /// or non-finite box are left out (no ray can hit them).
+    pub fn build_with(prim_bounds: &[Bounds3], opts: BuildOptions) -> Bvh {
+        let start = Instant::now();
+        let mut prims: Vec<BuildPrim> = prim_bounds
+            .par_iter()
+            .enumerate()
+            .filter(|(_, b)| !b.is_empty() && b.min.is_finite() && b.max.is_finite())
+            .map(|(i, b)| BuildPrim {
+                bounds: *b,
+                index: i as u32,
+            })
+            .collect();
+        if prims.is_empty() {
+            return Bvh::default();
+        }
+        let builder = Builder {
+            bins: opts.bins.clamp(2, MAX_BINS),
+            max_leaf: opts.max_leaf_prims.clamp(1, 255),
+            par: opts.parallel_threshold.max(2),
+        };
+        let boxes = Boxes::of(&prims, true);
+        let (root, summary) = builder.build(&mut prims, &boxes, 0, 0);
+        debug_assert!(summary.max_depth < MAX_DEPTH);
+        let mut nodes = Vec::with_capacity(summary.nodes);
+        flatten(&root, &mut nodes);
+        drop(root);
+        let prim_order: Vec<u32> = prims.iter().map(|p| p.index).collect();
+        let build_time = start.elapsed();
+        let stats = BvhStats {
+            prims: prim_order.len(),
+            nodes: summary.nodes,
+            leaves: summary.leaves,
+            max_depth: summary.max_depth,
+            avg_leaf_size: prim_order.len() as f64 / summary.leaves as f64,
+            sah_cost: sah_cost(&nodes),
+            build_time,
+        };
+        Bvh {
+            nodes,
+            prim_order,
+            stats,
+        }
+    }
+}
