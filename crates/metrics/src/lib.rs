@@ -6,11 +6,11 @@
 //!
 //! | metric | function | definition | algorithm | cost |
 //! |---|---|---|---|---|
-//! | star discrepancy, exact | [`star_discrepancy`] | `sup_y |A([0,y))/N − V(y)|` over open and closed anchored boxes | 1-D closed form; 2-D sweep with block upper envelopes; d ≥ 3 DEM-style recursion with a cost guard | `N log N`; `N^{3/2}`; `N^{d−2}/(d−2)!·N^{3/2}` |
+//! | star discrepancy, exact | [`star_discrepancy`] | largest `abs(A(B)/N − V(B))` over open and closed boxes `B` anchored at 0 | 1-D closed form; 2-D sweep with block upper envelopes; d ≥ 3 DEM-style recursion with a cost guard | `N log N`; `N^{3/2}`; `N^{d−2}/(d−2)!·N^{3/2}` |
 //! | star discrepancy, bounds | [`star_bounds`] | `lower ≤ D* ≤ upper` | random boxes (paper) and threshold accepting; grid bracketing | `K N d`; `R I N d`; `N d + (k+1)^d d` |
 //! | L2-star, CD, WD, MD | [`l2_discrepancy`], [`l2_discrepancies`] | SciPy's formulas and conventions (L2-star as root, others squared) | symmetric pair sum, vectorised, parallel | `N² d / 2` |
 //! | minimum / mean NN distance | [`distance_stats`], [`min_distance`] | Euclidean or toroidal | uniform grid, ring search | about `N·3^d` |
-//! | radial power spectrum (2-D) | [`radial_power_spectrum`] | `|Σ e^{−2πi k·x}|²/N` averaged over rings | separable phases | `N K²` |
+//! | radial power spectrum (2-D) | [`radial_power_spectrum`] | `abs(Σ e^{−2πi k·x})²/N` averaged over rings | separable phases | `N K²` |
 //!
 //! Details, formulas and references are in each module's documentation: [`star`],
 //! [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon; results do not depend

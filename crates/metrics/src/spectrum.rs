@@ -132,6 +132,44 @@ mod tests {
     }
 
     #[test]
+    fn equals_direct_periodogram() {
+        // 37 irregular points; every frequency of [-K, K]^2 evaluated with sin/cos.
+        let coords: Vec<f64> = (0..74)
+            .map(|i| ((i * 7919 + 13) % 1000) as f64 / 999.0)
+            .collect();
+        let p = PointSet::new(2, coords).unwrap();
+        let kmax = 40usize;
+        let s = radial_power_spectrum(&p, kmax).unwrap();
+        let (mut sum, mut cnt) = (vec![0.0; kmax + 1], vec![0usize; kmax + 1]);
+        let k = kmax as i64;
+        for kx in -k..=k {
+            for ky in -k..=k {
+                let ring = (((kx * kx + ky * ky) as f64).sqrt() + 0.5).floor() as usize;
+                if ring == 0 || ring > kmax {
+                    continue;
+                }
+                let (mut re, mut im) = (0.0f64, 0.0f64);
+                for q in p.iter() {
+                    let ph = -2.0 * std::f64::consts::PI * (kx as f64 * q[0] + ky as f64 * q[1]);
+                    re += ph.cos();
+                    im += ph.sin();
+                }
+                sum[ring] += (re * re + im * im) / p.len() as f64;
+                cnt[ring] += 1;
+            }
+        }
+        for r in 1..=kmax {
+            assert_eq!(s.counts[r - 1], cnt[r]);
+            let want = sum[r] / cnt[r] as f64;
+            assert!(
+                (s.power[r - 1] - want).abs() < 1e-9,
+                "ring {r}: {} vs {want}",
+                s.power[r - 1]
+            );
+        }
+    }
+
+    #[test]
     fn regular_lattice_has_peaks_at_multiples() {
         // m x m lattice with spacing 1/m: P(k) = n when m divides both k_x, k_y, else 0.
         let m = 4;
