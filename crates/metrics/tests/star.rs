@@ -236,4 +236,13 @@ fn bounds_are_deterministic_and_named() {
     assert!(a.upper_method.contains("grid bracketing"));
     assert!(!a.lower_method.is_empty());
     assert!(grid_upper_bound(&p, Some(0)).is_err());
+    let wide = random(50, 30, 2);
+    let opts = BoundsOptions {
+        random_boxes: 200,
+        ta_iterations: 200,
+        ..BoundsOptions::default()
+    };
+    let b = star_bounds(&wide, &opts).unwrap();
+    assert_eq!(b.upper, 1.0);
+    assert!(b.upper_method.starts_with("trivial") && b.lower > 0.0 && b.lower <= 1.0);
 }

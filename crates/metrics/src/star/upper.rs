@@ -8,7 +8,8 @@
 //! `V(g⁺) − V(g⁻) ≤ d/k` is the price). Counts at all `(k+1)^d` grid corners come from a
 //! histogram and `d` prefix-sum passes; cost O(N·d + (k+1)^d·d), memory `(k+1)^d` words.
 //! The default `k` is the largest with `(k+1)^d ≤ 2^22` (e.g. 2047 in 2-D, 7 in 8-D):
-//! tight in low dimension, weak but valid in high dimension.
+//! tight in low dimension, weak but valid in high dimension; above 22 dimensions
+//! [`star_bounds`] falls back to the trivial bound 1.
 
 use serde::Serialize;
 
@@ -157,7 +158,17 @@ pub fn star_bounds(points: &PointSet, options: &BoundsOptions) -> Result<StarBou
         options.ta_restarts,
         options.seed,
     );
-    let (upper, k) = grid_upper_bound(points, options.grid_cells)?;
+    let d = points.dims();
+    // Even k = 1 needs 2^d corners; beyond 2^22 only the trivial bound remains.
+    let (upper, upper_method) = if options.grid_cells.is_none() && d > 22 {
+        (
+            1.0,
+            format!("trivial (D* <= 1; a bracketing grid is too large in {d} dimensions)"),
+        )
+    } else {
+        let (u, k) = grid_upper_bound(points, options.grid_cells)?;
+        (u, format!("grid bracketing ({k} cells per axis)"))
+    };
     let (lower, lower_method) = if ta >= random {
         (
             ta,
@@ -179,6 +190,6 @@ pub fn star_bounds(points: &PointSet, options: &BoundsOptions) -> Result<StarBou
         lower,
         upper,
         lower_method,
-        upper_method: format!("grid bracketing ({k} cells per axis)"),
+        upper_method,
     })
 }
