@@ -202,3 +202,24 @@ fn truncated_copies_of_a_real_ply_give_errors() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn bmw_m6_loads_with_pinned_counts() {
+    let dir = Path::new(SCENES).join("bmw-m6/geometry");
+    let Ok(rd) = std::fs::read_dir(&dir) else {
+        println!("skipped: {} not found (shared scenes absent)", dir.display());
+        return;
+    };
+    let mut files: Vec<_> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
+    files.retain(|p| p.extension().is_some_and(|e| e == "ply"));
+    let (mut tris, mut with_normals, mut with_uvs) = (0usize, 0usize, 0usize);
+    for f in &files {
+        let m = read_ply(f).unwrap();
+        tris += m.indices.len();
+        with_normals += m.normals.is_some() as usize;
+        with_uvs += m.uvs.is_some() as usize;
+    }
+    // Pinned from the scene as shipped: a change means the loader changed.
+    assert_eq!((files.len(), tris), (114, 792_746));
+    assert!(with_normals > 0 && with_uvs > 0);
+}

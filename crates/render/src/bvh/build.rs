@@ -1,5 +1,6 @@
 //! Binned-SAH construction (parallel) and depth-first flattening.
 
+use super::flatten::{flatten, sah_cost};
 use super::{Bvh, BvhStats, MAX_DEPTH, Node};
 use crate::math::{Bounds3, Vec3};
 use rayon::prelude::*;
@@ -30,7 +31,7 @@ impl Default for BuildOptions {
 /// `MEDIAN_DEPTH + 32 < MAX_DEPTH` for up to 2^32 primitives.
 const MEDIAN_DEPTH: usize = 56;
 /// pbrt's relative cost of a traversal step.
-const TRAVERSAL_COST: f32 = 0.5;
+pub(super) const TRAVERSAL_COST: f32 = 0.5;
 
 /// Largest number of SAH bins.
 const MAX_BINS: usize = 16;
@@ -94,7 +95,7 @@ impl Boxes {
 
 /// A subtree: interior nodes above the parallel threshold, flattened
 /// depth-first below it (child indices relative to the vector's start).
-enum BuildNode {
+pub(super) enum BuildNode {
     Interior {
         bounds: Bounds3,
         axis: u8,
@@ -348,69 +349,6 @@ impl Builder {
             }
         }
     }
-}
-
-fn flatten(node: &BuildNode, nodes: &mut Vec<Node>) {
-    match node {
-        BuildNode::Flat(sub) => {
-            let base = nodes.len() as u32;
-            nodes.extend(sub.iter().map(|n| {
-                let mut n = *n;
-                if !n.is_leaf() {
-                    n.offset += base;
-                }
-                n
-            }));
-        }
-        BuildNode::Interior {
-            bounds,
-            axis,
-            children,
-        } => {
-            let idx = nodes.len();
-            nodes.push(Node {
-                min: bounds.min.to_array(),
-                max: bounds.max.to_array(),
-                offset: 0,
-                count: 0,
-                axis: *axis,
-                pad: 0,
-            });
-            flatten(&children[0], nodes);
-            nodes[idx].offset = nodes.len() as u32;
-            flatten(&children[1], nodes);
-        }
-    }
-}
-
-/// Sum over nodes of `area * cost` for pbrt's SAH model, divided by the root area.
-fn sah_cost(nodes: &[Node]) -> f64 {
-    let area = |n: &Node| {
-        Bounds3 {
-            min: Vec3::from_array(n.min),
-            max: Vec3::from_array(n.max),
-        }
-        .surface_area() as f64
-    };
-    let Some(root) = nodes.first() else {
-        return 0.0;
-    };
-    let ra = area(root);
-    if !(ra > 0.0) {
-        return 0.0;
-    }
-    nodes
-        .iter()
-        .map(|n| {
-            area(n)
-                * if n.is_leaf() {
-                    n.count as f64
-                } else {
-                    TRAVERSAL_COST as f64
-                }
-        })
-        .sum::<f64>()
-        / ra
 }
 
 impl Bvh {

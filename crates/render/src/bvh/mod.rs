@@ -15,6 +15,7 @@
 //!   primitive data in that order for locality.
 
 mod build;
+mod flatten;
 mod traverse;
 
 pub use build::BuildOptions;
