@@ -8,7 +8,7 @@
 //!   quantisation.
 //! - Error metrics ([`metrics`]): MSE, relMSE, RMSE and MAE on linear radiance
 //!   and on 8-bit sRGB, per-pixel error images.
-//! - Visualisation and utilities ([`heatmap`], [`ops`]): false-colour
+//! - Visualisation and utilities ([`mod@heatmap`], [`ops`]): false-colour
 //!   heatmaps, crops, nearest-neighbour upscaling, statistics.
 //!
 //! Nothing here panics on bad input: every failure is an [`ImageError`].
