@@ -64,7 +64,7 @@ const NIBBLE_MASKS: [[u32; GROUP]; 16] = {
 
 /// `L` matrix-vector products with one index: lane `k` is
 /// `multiply(matrices[k], index)`.
-#[inline]
+#[inline(always)]
 fn multiply_lanes<const L: usize>(matrices: [&[u32; 32]; L], index: u32) -> [u32; L] {
     let mut acc = [[0u32; GROUP]; L];
     let mut rest = index;
