@@ -30,7 +30,11 @@ fn main() {
     let big_endian = std::env::var("CARGO_CFG_TARGET_ENDIAN").as_deref() == Ok("big");
     let mut bytes = Vec::with_capacity(table.len() * 4);
     for word in &table {
-        let b = if big_endian { word.to_be_bytes() } else { word.to_le_bytes() };
+        let b = if big_endian {
+            word.to_be_bytes()
+        } else {
+            word.to_le_bytes()
+        };
         bytes.extend_from_slice(&b);
     }
     let out = std::path::PathBuf::from(std::env::var_os("OUT_DIR").unwrap());

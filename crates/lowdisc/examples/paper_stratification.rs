@@ -32,7 +32,10 @@ fn main() {
     let seeds = 16u64;
     for (d0, d1) in [(0u32, 1u32), (2, 3)] {
         println!("## Sobol dimensions {d0} and {d1}\n");
-        println!("| m | variant | {} |", thresholds.map(|t| format!("t = {t}")).join(" | "));
+        println!(
+            "| m | variant | {} |",
+            thresholds.map(|t| format!("t = {t}")).join(" | ")
+        );
         println!("|---|---|{}", "---|".repeat(thresholds.len()));
         for m in [4u32, 6, 8, 10, 12] {
             for variant in ["literal", "reproducible"] {
@@ -59,7 +62,10 @@ fn main() {
                             total += occ;
                             nets += usize::from(occ == 1.0);
                         }
-                        format!("{:.1} % ({nets}/{seeds} nets)", 100.0 * total / seeds as f64)
+                        format!(
+                            "{:.1} % ({nets}/{seeds} nets)",
+                            100.0 * total / seeds as f64
+                        )
                     })
                     .collect();
                 println!("| {m} | {variant} | {} |", cells.join(" | "));

@@ -44,7 +44,10 @@ pub enum Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::DimensionOutOfRange { dimension, available } => write!(
+            Error::DimensionOutOfRange {
+                dimension,
+                available,
+            } => write!(
                 f,
                 "dimension {dimension} is out of range: this sequence has dimensions 0..{available}"
             ),
@@ -54,7 +57,11 @@ impl fmt::Display for Error {
             Error::InvalidSampleCount { count, reason } => {
                 write!(f, "invalid sample count {count}: {reason}")
             }
-            Error::InvalidResolution { width, height, reason } => {
+            Error::InvalidResolution {
+                width,
+                height,
+                reason,
+            } => {
                 write!(f, "invalid resolution {width}x{height}: {reason}")
             }
             Error::PixelOutOfRange { pixel, resolution } => write!(

@@ -57,7 +57,11 @@ pub fn flip_entry(entry: u32) -> u32 {
         return 0;
     }
     let width = 32 - entry.leading_zeros();
-    let mask = if width == 32 { u32::MAX } else { (1u32 << width) - 1 };
+    let mask = if width == 32 {
+        u32::MAX
+    } else {
+        (1u32 << width) - 1
+    };
     entry ^ mask
 }
 

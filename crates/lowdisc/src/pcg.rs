@@ -97,7 +97,9 @@ mod tests {
         let got: [u32; 6] = core::array::from_fn(|_| rng.next_u32());
         assert_eq!(
             got,
-            [0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293, 0xbfa4784b, 0xcbed606e]
+            [
+                0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293, 0xbfa4784b, 0xcbed606e
+            ]
         );
     }
 

@@ -26,8 +26,14 @@ const VAR_TOL: f64 = 5.0 * 0.00053;
 fn exact_owen_points_are_uniform_over_seeds() {
     for (index, dim) in [(0u32, 0u32), (1, 0), (3, 1), (1000, 7), (65_535, 21_200)] {
         let (mean, var) = moments(index, dim, |seed| Randomize::Owen { seed });
-        assert!((mean - 0.5).abs() < MEAN_TOL, "index {index} dim {dim}: mean {mean}");
-        assert!((var - 1.0 / 12.0).abs() < VAR_TOL, "index {index} dim {dim}: variance {var}");
+        assert!(
+            (mean - 0.5).abs() < MEAN_TOL,
+            "index {index} dim {dim}: mean {mean}"
+        );
+        assert!(
+            (var - 1.0 / 12.0).abs() < VAR_TOL,
+            "index {index} dim {dim}: variance {var}"
+        );
     }
 }
 

@@ -22,7 +22,11 @@ fn random_access_matches_scipy() {
     let values = fixture();
     assert_eq!(values.len(), 1584);
     for (k, dim, word) in values {
-        assert_eq!(sample(gray_code(k), dim), word, "point {k}, dimension {dim}");
+        assert_eq!(
+            sample(gray_code(k), dim),
+            word,
+            "point {k}, dimension {dim}"
+        );
     }
 }
 

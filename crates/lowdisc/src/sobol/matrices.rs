@@ -6,8 +6,10 @@ include!(concat!(env!("OUT_DIR"), "/sobol_dimensions.rs"));
 #[repr(C, align(4))]
 struct Aligned<Bytes: ?Sized>(Bytes);
 
-static RAW: &Aligned<[u8]> =
-    &Aligned(*include_bytes!(concat!(env!("OUT_DIR"), "/sobol_matrices.bin")));
+static RAW: &Aligned<[u8]> = &Aligned(*include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/sobol_matrices.bin"
+)));
 
 /// All generator matrices, one `[u32; 32]` (columns 0..32) per dimension.
 #[inline]

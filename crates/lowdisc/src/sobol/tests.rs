@@ -48,7 +48,10 @@ fn dims_0_1_form_02_nets_under_every_randomization() {
             let pts: alloc::vec::Vec<(u32, u32)> = (0..1u32 << m)
                 .map(|i| (sample_randomized(i, 0, r), sample_randomized(i, 1, r)))
                 .collect();
-            assert!(is_02_net(&pts, m), "{r:?}: first 2^{m} points are not a (0,{m},2)-net");
+            assert!(
+                is_02_net(&pts, m),
+                "{r:?}: first 2^{m} points are not a (0,{m},2)-net"
+            );
         }
     }
 }
@@ -56,7 +59,8 @@ fn dims_0_1_form_02_nets_under_every_randomization() {
 #[test]
 fn net_check_detects_a_broken_net() {
     // Sanity check of the checker: a duplicated point breaks the net.
-    let mut pts: alloc::vec::Vec<(u32, u32)> = (0..16u32).map(|i| (sample(i, 0), sample(i, 1))).collect();
+    let mut pts: alloc::vec::Vec<(u32, u32)> =
+        (0..16u32).map(|i| (sample(i, 0), sample(i, 1))).collect();
     assert!(is_02_net(&pts, 4));
     pts[3] = pts[2];
     assert!(!is_02_net(&pts, 4));
@@ -83,7 +87,10 @@ fn every_dimension_is_stratified_in_1d() {
     // Every generator matrix is non-singular, so each dimension's first 2^m
     // points take each m-digit prefix exactly once.
     let m = 8;
-    for dim in (0..NUM_DIMENSIONS as u32).step_by(97).chain([NUM_DIMENSIONS as u32 - 1]) {
+    for dim in (0..NUM_DIMENSIONS as u32)
+        .step_by(97)
+        .chain([NUM_DIMENSIONS as u32 - 1])
+    {
         let mut seen = [false; 256];
         for i in 0..1u32 << m {
             let cell = (sample(i, dim) >> (32 - m)) as usize;
@@ -149,7 +156,10 @@ fn four_dimensional_sampling_equals_one_dimensional() {
 fn randomized_values_are_stable() {
     let got: alloc::vec::Vec<u32> = strategies()
         .iter()
-        .flat_map(|&r| [(5u32, 0u32), (1000, 3), (123_456_789, 21_200)].map(|(i, d)| sample_randomized(i, d, r)))
+        .flat_map(|&r| {
+            [(5u32, 0u32), (1000, 3), (123_456_789, 21_200)]
+                .map(|(i, d)| sample_randomized(i, d, r))
+        })
         .collect();
     assert_eq!(got, PINNED_RANDOMIZED);
 }
