@@ -1,0 +1,102 @@
+//! [`Bsdf`]: a BxDF with its shading frame, taking and returning world-space
+//! directions (pbrt-v4's `BSDF`).
+
+use super::{BsdfSample, Bxdf, BxdfFlags, BxdfModel, SampleFlags, TransportMode};
+use crate::math::{Frame, Vec3};
+use crate::spectrum::Rgb;
+
+/// A BxDF placed at a surface point: world-space `f`, `sample_f`, `pdf`.
+#[derive(Clone, Debug)]
+pub struct Bsdf {
+    /// The local scattering model.
+    pub bxdf: Bxdf,
+    /// Shading frame: `z` is the shading normal, `x` follows `dpdu`.
+    pub frame: Frame,
+}
+
+impl Bsdf {
+    /// A BSDF with shading normal `ns` (need not be unit) and tangent
+    /// `dpdus` (projected onto the tangent plane; any vector if unknown).
+    pub fn new(ns: Vec3, dpdus: Vec3, bxdf: Bxdf) -> Bsdf {
+        let n = ns.normalize();
+        let frame = if n.is_finite() {
+            Frame::from_zx(n, dpdus)
+        } else {
+            Frame::from_z(Vec3::Z)
+        };
+        Bsdf { bxdf, frame }
+    }
+    /// A BSDF in an explicit frame.
+    pub fn with_frame(frame: Frame, bxdf: Bxdf) -> Bsdf {
+        Bsdf { bxdf, frame }
+    }
+    /// World to local.
+    #[inline]
+    pub fn to_local(&self, v: Vec3) -> Vec3 {
+        self.frame.to_local(v)
+    }
+    /// Local to world.
+    #[inline]
+    pub fn from_local(&self, v: Vec3) -> Vec3 {
+        self.frame.from_local(v)
+    }
+    /// The lobes of the BxDF.
+    #[inline]
+    pub fn flags(&self) -> BxdfFlags {
+        self.bxdf.flags()
+    }
+    /// `f(wo, wi)` for world directions (zero when `wo` is in the tangent plane).
+    pub fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb {
+        let (wo, wi) = (self.to_local(wo), self.to_local(wi));
+        if wo.z == 0.0 {
+            return Rgb::ZERO;
+        }
+        self.bxdf.f(wo, wi, mode)
+    }
+    /// Samples an incident world direction; `u_lobe` picks the lobe, `u` the
+    /// direction. `None` when sampling fails or yields a useless sample.
+    pub fn sample_f(
+        &self,
+        wo: Vec3,
+        u_lobe: f32,
+        u: [f32; 2],
+        mode: TransportMode,
+    ) -> Option<BsdfSample> {
+        self.sample_f_restricted(wo, u_lobe, u, mode, SampleFlags::All)
+    }
+    /// [`Bsdf::sample_f`] restricted to reflection or transmission.
+    pub fn sample_f_restricted(
+        &self,
+        wo: Vec3,
+        u_lobe: f32,
+        u: [f32; 2],
+        mode: TransportMode,
+        sample: SampleFlags,
+    ) -> Option<BsdfSample> {
+        let wo = self.to_local(wo);
+        let flags = self.bxdf.flags();
+        let allowed = (sample.reflection() && flags.is_reflective())
+            || (sample.transmission() && flags.is_transmissive());
+        if wo.z == 0.0 || !allowed {
+            return None;
+        }
+        let mut bs = self.bxdf.sample_f(wo, u_lobe, u, mode, sample)?;
+        if bs.f.is_black() || !(bs.pdf > 0.0) || bs.wi.z == 0.0 || !bs.f.is_finite() {
+            return None;
+        }
+        bs.wi = self.from_local(bs.wi);
+        Some(bs)
+    }
+    /// Solid-angle density of sampling `wi` given `wo` (world directions).
+    pub fn pdf(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> f32 {
+        let (wo, wi) = (self.to_local(wo), self.to_local(wi));
+        if wo.z == 0.0 {
+            return 0.0;
+        }
+        self.bxdf.pdf(wo, wi, mode, SampleFlags::All)
+    }
+    /// Widens near-specular lobes (for path regularization).
+    pub fn regularize(&mut self) {
+        self.bxdf.regularize();
+    }
+}
