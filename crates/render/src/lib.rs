@@ -14,13 +14,13 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod accel;
-pub mod bsdf;
 pub mod bvh;
+pub mod camera;
 pub mod error;
+pub mod filter;
 pub mod geometry;
 pub mod math;
 pub mod mesh;
-pub mod spectrum;
 
 pub use accel::Accel;
 pub use error::Error;
