@@ -14,6 +14,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod accel;
+pub mod bsdf;
 pub mod bvh;
 pub mod camera;
 pub mod error;
@@ -21,6 +22,7 @@ pub mod filter;
 pub mod geometry;
 pub mod math;
 pub mod mesh;
+pub mod spectrum;
 
 pub use accel::Accel;
 pub use error::Error;
