@@ -1,0 +1,241 @@
+//! Diffuse area lights on triangles, spheres and disks, sampled uniformly by
+//! area and converted to solid angle.
+
+use super::error::{check_rgb, check_scalar};
+use super::{LightError, LightLiSample, LightSampleContext, luminance_normaliser};
+use crate::geometry::{Disk, Prim, ShapeSample, ShapeSet, Sphere, intersect_triangle};
+use crate::math::sampling::sample_uniform_triangle;
+use crate::math::{Normal3, Point2, Point3, Ray, Vec3};
+use crate::spectrum::Rgb;
+use std::f32::consts::PI;
+
+/// The emitting shape of a [`DiffuseAreaLight`] (a copy of its geometry).
+#[derive(Clone, Debug)]
+pub enum AreaShape {
+    /// One triangle with its oriented unit geometric normal.
+    Triangle {
+        /// World-space vertices.
+        p: [Point3; 3],
+        /// Unit geometric normal, oriented as at a ray hit.
+        n: Normal3,
+    },
+    /// A sphere.
+    Sphere(Sphere),
+    /// A disk (or annulus).
+    Disk(Disk),
+}
+
+impl AreaShape {
+    /// Copies primitive `prim` of `shapes`; errors for a triangle without area.
+    pub fn from_prim(shapes: &ShapeSet, prim: Prim) -> Result<Self, LightError> {
+        Ok(match prim {
+            Prim::Triangle { mesh, tri } => {
+                let m = shapes
+                    .meshes
+                    .get(mesh as usize)
+                    .filter(|m| (tri as usize) < m.len());
+                let m = m.ok_or_else(|| {
+                    LightError::InvalidParameter(format!("no primitive {prim:?}"))
+                })?;
+                // The normal at the centroid carries the mesh's orientation rules.
+                let s = m.sample(tri as usize, Point2::new(4.0 / 9.0, 0.5));
+                let s = s.ok_or_else(|| {
+                    LightError::InvalidParameter("area light triangle has no area".into())
+                })?;
+                AreaShape::Triangle {
+                    p: m.vertices(tri as usize),
+                    n: s.n,
+                }
+            }
+            Prim::Sphere(i) => AreaShape::Sphere(Self::get(&shapes.spheres, i, prim)?),
+            Prim::Disk(i) => AreaShape::Disk(Self::get(&shapes.disks, i, prim)?),
+        })
+    }
+
+    fn get<T: Clone>(v: &[T], i: u32, prim: Prim) -> Result<T, LightError> {
+        v.get(i as usize)
+            .cloned()
+            .ok_or_else(|| LightError::InvalidParameter(format!("no primitive {prim:?}")))
+    }
+
+    /// Surface area.
+    pub fn area(&self) -> f32 {
+        match self {
+            AreaShape::Triangle { p, .. } => 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).length(),
+            AreaShape::Sphere(s) => s.area(),
+            AreaShape::Disk(d) => d.area(),
+        }
+    }
+
+    /// A point uniformly distributed by area.
+    pub fn sample(&self, u: Point2) -> Option<ShapeSample> {
+        match self {
+            AreaShape::Triangle { p, n } => {
+                let area = self.area();
+                if !(area > 0.0) {
+                    return None;
+                }
+                let b = sample_uniform_triangle(u);
+                let q = p[0] * b[0] + p[1] * b[1] + p[2] * b[2];
+                Some(ShapeSample {
+                    p: q,
+                    n: *n,
+                    uv: Point2::new(b[1], b[2]),
+                    pdf: 1.0 / area,
+                })
+            }
+            AreaShape::Sphere(s) => s.sample(u),
+            AreaShape::Disk(d) => d.sample(u),
+        }
+    }
+
+    /// The nearest intersection of `ray` (`t > 0`) as (point, unit normal).
+    pub fn intersect(&self, ray: &Ray) -> Option<(Point3, Normal3)> {
+        match self {
+            AreaShape::Triangle { p, n } => {
+                let h = intersect_triangle(ray, f32::INFINITY, *p)?;
+                Some((p[0] * (1.0 - h.u - h.v) + p[1] * h.u + p[2] * h.v, *n))
+            }
+            AreaShape::Sphere(s) => {
+                let h = s.intersect(ray, f32::INFINITY)?;
+                let sh = s.surface_hit(ray, &h);
+                Some((sh.p, sh.ng))
+            }
+            AreaShape::Disk(d) => {
+                let h = d.intersect(ray, f32::INFINITY)?;
+                let sh = d.surface_hit(ray, &h);
+                Some((sh.p, sh.ng))
+            }
+        }
+    }
+}
+
+/// pbrt-v4's `AreaLightSource "diffuse"`: radiance `L * scale` leaving the
+/// front side of a shape (both sides when `two_sided`).
+#[derive(Clone, Debug)]
+pub struct DiffuseAreaLight {
+    shape: AreaShape,
+    prim: Option<Prim>,
+    l: Rgb,
+    two_sided: bool,
+    area: f32,
+}
+
+impl DiffuseAreaLight {
+    /// An area light on `shape`; errors for negative or non-finite `l` or
+    /// `scale` or a shape without area.
+    pub fn new(shape: AreaShape, l: Rgb, scale: f32, two_sided: bool) -> Result<Self, LightError> {
+        check_rgb("L", l)?;
+        check_scalar("scale", scale)?;
+        let area = shape.area();
+        if !(area > 0.0 && area.is_finite()) {
+            return Err(LightError::InvalidParameter(format!(
+                "area light shape has area {area}"
+            )));
+        }
+        Ok(DiffuseAreaLight {
+            shape,
+            prim: None,
+            l: l * scale,
+            two_sided,
+            area,
+        })
+    }
+
+    /// An area light on primitive `prim` of `shapes` (remembered in
+    /// [`DiffuseAreaLight::prim`] so a scene can map hits to lights).
+    pub fn from_prim(
+        shapes: &ShapeSet,
+        prim: Prim,
+        l: Rgb,
+        scale: f32,
+        two_sided: bool,
+    ) -> Result<Self, LightError> {
+        let mut light = Self::new(AreaShape::from_prim(shapes, prim)?, l, scale, two_sided)?;
+        light.prim = Some(prim);
+        Ok(light)
+    }
+
+    /// The primitive this light was built from, if any.
+    pub fn prim(&self) -> Option<Prim> {
+        self.prim
+    }
+    /// The emitting shape.
+    pub fn shape(&self) -> &AreaShape {
+        &self.shape
+    }
+    /// Surface area of the shape.
+    pub fn area(&self) -> f32 {
+        self.area
+    }
+    /// True when both sides emit.
+    pub fn two_sided(&self) -> bool {
+        self.two_sided
+    }
+
+    pub(crate) fn l(&self, _p: Point3, n: Normal3, _uv: Point2, w: Vec3) -> Rgb {
+        if !self.two_sided && n.dot(w) < 0.0 {
+            Rgb::ZERO
+        } else {
+            self.l
+        }
+    }
+
+    pub(crate) fn sample_li(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
+        let ss = self.shape.sample(Point2::new(u[0], u[1]))?;
+        let d = ss.p - ctx.p;
+        let d2 = d.length_squared();
+        if !(d2 > 0.0) {
+            return None;
+        }
+        let wi = d / d2.sqrt();
+        let cos_l = ss.n.abs_dot(wi);
+        if !(cos_l > 0.0) {
+            return None;
+        }
+        Some(LightLiSample {
+            l: self.l(ss.p, ss.n, ss.uv, -wi),
+            wi,
+            pdf: ss.pdf * d2 / cos_l,
+            p_light: ss.p,
+            n_light: ss.n,
+            is_delta: false,
+        })
+    }
+
+    pub(crate) fn pdf_li_hit(
+        &self,
+        ctx: &LightSampleContext,
+        p_light: Point3,
+        n_light: Normal3,
+    ) -> f32 {
+        let d = p_light - ctx.p;
+        let d2 = d.length_squared();
+        let cos_l = n_light.abs_dot(d) / d2.sqrt();
+        if !(d2 > 0.0 && cos_l > 0.0) {
+            return 0.0;
+        }
+        let pdf = d2 / (cos_l * self.area);
+        if pdf.is_finite() { pdf } else { 0.0 }
+    }
+
+    pub(crate) fn pdf_li(&self, ctx: &LightSampleContext, wi: Vec3) -> f32 {
+        match self.shape.intersect(&Ray::new(ctx.p, wi)) {
+            Some((p, n)) => self.pdf_li_hit(ctx, p, n),
+            None => 0.0,
+        }
+    }
+
+    pub(crate) fn phi(&self) -> Rgb {
+        self.l * (PI * self.area * if self.two_sided { 2.0 } else { 1.0 })
+    }
+}
+
+/// The factor to multiply a diffuse area light's `scale` by so that the
+/// luminance of its total power is `power`, for radiance `l` on shapes of
+/// `total_area` (pbrt-v4's `"float power"`; apply it to every primitive of
+/// the shape). Returns 1 when `power` is not positive.
+pub fn diffuse_power_scale(l: Rgb, power: f32, total_area: f32, two_sided: bool) -> f32 {
+    let k_e = PI * total_area * if two_sided { 2.0 } else { 1.0 };
+    luminance_normaliser(l, k_e, Some(power))
+}
