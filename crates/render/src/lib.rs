@@ -20,8 +20,10 @@ pub mod camera;
 pub mod error;
 pub mod filter;
 pub mod geometry;
+pub mod light;
 pub mod math;
 pub mod mesh;
+pub mod sampling;
 pub mod spectrum;
 
 pub use accel::Accel;
