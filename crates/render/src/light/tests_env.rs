@@ -261,10 +261,10 @@ fn image_irradiance_matches_uniform_sampling_and_illuminance() {
     }
 }
 
-fn envmaps() -> Option<PathBuf> {
+fn scenes() -> Option<PathBuf> {
     let dir = PathBuf::from(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes/envmaps"
+        "/../../../shared/scenes"
     ));
     if dir.is_dir() {
         Some(dir)
@@ -276,11 +276,18 @@ fn envmaps() -> Option<PathBuf> {
 
 #[test]
 fn real_environment_maps_are_normalised() {
-    let Some(dir) = envmaps() else { return };
+    let Some(dir) = scenes() else { return };
     let rot = Transform::rotate(-90.0, Vec3::X);
     for (name, layout) in [
-        ("pbrt-v4-ganesha-sky-equiarea.exr", EnvLayout::EqualArea),
-        ("polyhaven-venice_sunset_1k.hdr", EnvLayout::LatLong),
+        (
+            "envmaps/pbrt-v4-ganesha-sky-equiarea.exr",
+            EnvLayout::EqualArea,
+        ),
+        (
+            "bitterli-classroom/textures/Skydome.pfm",
+            EnvLayout::EqualArea,
+        ),
+        ("envmaps/polyhaven-venice_sunset_1k.hdr", EnvLayout::LatLong),
     ] {
         let path = dir.join(name);
         if !path.is_file() {
