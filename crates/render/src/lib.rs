@@ -18,6 +18,7 @@ pub mod bsdf;
 pub mod bvh;
 pub mod camera;
 pub mod error;
+pub mod film;
 pub mod filter;
 pub mod geometry;
 pub mod light;
@@ -25,6 +26,7 @@ pub mod math;
 pub mod mesh;
 pub mod sampling;
 pub mod spectrum;
+pub mod texture;
 
 pub use accel::Accel;
 pub use error::Error;

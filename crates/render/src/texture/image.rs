@@ -1,0 +1,167 @@
+//! Image maps: texel storage with pbrt-v4's colour encodings for 8-bit files,
+//! wrap modes and bilinear lookups.
+//!
+//! Lookups follow pbrt-v4's `Image::Bilerp`: a coordinate `s` in `[0,1]`
+//! maps to the continuous texel position `s * width - 0.5`, so texel `i`'s
+//! centre is at `s = (i + 0.5) / width`. Row 0 is the *top* of the file; the
+//! image texture flips `t` before looking up (see [`super::ImageTexture`]).
+
+use super::TextureError;
+use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, read_image_with, srgb_decode};
+use std::path::Path;
+
+/// How the 8-bit (or 16-bit) codes of a PNG or TGA file become linear
+/// values (pbrt-v4's `encoding` parameter). Float images (EXR, HDR, PFM) are
+/// always linear.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ColorEncoding {
+    /// The sRGB curve.
+    Srgb,
+    /// `code / max`.
+    Linear,
+    /// `(code / max) ^ gamma`.
+    Gamma(f32),
+}
+
+impl ColorEncoding {
+    /// Parses pbrt's `"sRGB"`, `"linear"` or `"gamma G"`.
+    pub fn parse(s: &str) -> Result<ColorEncoding, TextureError> {
+        let bad = || TextureError::UnknownEncoding(s.to_string());
+        match s {
+            "sRGB" | "srgb" => Ok(ColorEncoding::Srgb),
+            "linear" => Ok(ColorEncoding::Linear),
+            _ => {
+                let g = s.strip_prefix("gamma").ok_or_else(bad)?;
+                let g: f32 = g.trim().parse().map_err(|_| bad())?;
+                if g > 0.0 && g.is_finite() {
+                    Ok(ColorEncoding::Gamma(g))
+                } else {
+                    Err(bad())
+                }
+            }
+        }
+    }
+
+    /// pbrt-v4's default for an image file: sRGB for `.png`, linear otherwise
+    /// (so 8-bit TGA textures are linear unless the scene says otherwise).
+    pub fn default_for(path: &Path) -> ColorEncoding {
+        let png = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+        if png {
+            ColorEncoding::Srgb
+        } else {
+            ColorEncoding::Linear
+        }
+    }
+
+    /// Decodes a normalised code `v` in `[0,1]`.
+    pub fn decode(self, v: f32) -> f32 {
+        match self {
+            ColorEncoding::Srgb => srgb_decode(v),
+            ColorEncoding::Linear => v,
+            ColorEncoding::Gamma(g) => v.max(0.0).powf(g),
+        }
+    }
+}
+
+/// What a lookup outside `[0,1]^2` sees (pbrt's `wrap` parameter).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum WrapMode {
+    /// Tile the image (the default).
+    #[default]
+    Repeat,
+    /// Extend the edge texels.
+    Clamp,
+    /// Black outside the image.
+    Black,
+}
+
+impl WrapMode {
+    /// Parses `"repeat"`, `"clamp"` or `"black"` (pbrt-v4's `octahedralsphere`
+    /// is not supported here).
+    pub fn parse(s: &str) -> Result<WrapMode, TextureError> {
+        match s {
+            "repeat" => Ok(WrapMode::Repeat),
+            "clamp" => Ok(WrapMode::Clamp),
+            "black" => Ok(WrapMode::Black),
+            _ => Err(TextureError::UnknownWrap(s.to_string())),
+        }
+    }
+}
+
+/// A linear RGB texture image.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexImage {
+    image: RgbImage,
+}
+
+impl TexImage {
+    /// Wraps a linear image.
+    pub fn new(image: RgbImage) -> TexImage {
+        TexImage { image }
+    }
+
+    /// Reads an image file; for 8-bit/16-bit formats the codes are decoded
+    /// with `encoding`, float formats are taken as they are.
+    pub fn load(path: &Path, encoding: ColorEncoding) -> Result<TexImage, TextureError> {
+        let image = read_image_with(path, &ReadOptions::raw())?;
+        let float = ImageFormat::from_extension(path).is_some_and(|f| f.is_high_dynamic_range());
+        if float || encoding == ColorEncoding::Linear {
+            return Ok(TexImage { image });
+        }
+        Ok(TexImage {
+            image: image.map(|p| p.map(|v| encoding.decode(v))),
+        })
+    }
+
+    /// The image.
+    pub fn image(&self) -> &RgbImage {
+        &self.image
+    }
+    /// `[width, height]`.
+    pub fn resolution(&self) -> [usize; 2] {
+        [self.image.width(), self.image.height()]
+    }
+
+    /// Texel `(x, y)` (row 0 at the top) under `wrap`.
+    pub fn texel(&self, x: i64, y: i64, wrap: WrapMode) -> [f32; 3] {
+        let (w, h) = (self.image.width() as i64, self.image.height() as i64);
+        let (x, y) = match wrap {
+            WrapMode::Repeat => (x.rem_euclid(w), y.rem_euclid(h)),
+            WrapMode::Clamp => (x.clamp(0, w - 1), y.clamp(0, h - 1)),
+            WrapMode::Black => {
+                if x < 0 || x >= w || y < 0 || y >= h {
+                    return [0.0; 3];
+                }
+                (x, y)
+            }
+        };
+        self.image.get(x as usize, y as usize).unwrap_or([0.0; 3])
+    }
+
+    /// Bilinear interpolation at image coordinates `st` in `[0,1]^2` (s to
+    /// the right, t down), texel centres at `(i + 0.5) / size`.
+    pub fn bilerp(&self, st: [f32; 2], wrap: WrapMode) -> [f32; 3] {
+        let x = f64::from(st[0]) * self.image.width() as f64 - 0.5;
+        let y = f64::from(st[1]) * self.image.height() as f64 - 0.5;
+        if !(x.is_finite() && y.is_finite()) {
+            return [0.0; 3];
+        }
+        let (xf, yf) = (x.floor(), y.floor());
+        let (dx, dy) = ((x - xf) as f32, (y - yf) as f32);
+        // Saturating casts keep absurd coordinates from overflowing.
+        let (xi, yi) = (xf as i64, yf as i64);
+        let v00 = self.texel(xi, yi, wrap);
+        let v10 = self.texel(xi + 1, yi, wrap);
+        let v01 = self.texel(xi, yi + 1, wrap);
+        let v11 = self.texel(xi + 1, yi + 1, wrap);
+        std::array::from_fn(|c| {
+            (1.0 - dx) * (1.0 - dy) * v00[c]
+                + dx * (1.0 - dy) * v10[c]
+                + (1.0 - dx) * dy * v01[c]
+                + dx * dy * v11[c]
+        })
+    }
+}
