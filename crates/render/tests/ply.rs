@@ -207,7 +207,10 @@ fn truncated_copies_of_a_real_ply_give_errors() {
 fn bmw_m6_loads_with_pinned_counts() {
     let dir = Path::new(SCENES).join("bmw-m6/geometry");
     let Ok(rd) = std::fs::read_dir(&dir) else {
-        println!("skipped: {} not found (shared scenes absent)", dir.display());
+        println!(
+            "skipped: {} not found (shared scenes absent)",
+            dir.display()
+        );
         return;
     };
     let mut files: Vec<_> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
