@@ -17,14 +17,18 @@ pub mod accel;
 pub mod bsdf;
 pub mod bvh;
 pub mod camera;
+pub mod cornell;
 pub mod error;
 pub mod film;
 pub mod filter;
 pub mod geometry;
+pub mod integrator;
 pub mod light;
 pub mod math;
 pub mod mesh;
+pub mod render;
 pub mod sampling;
+pub mod scene;
 pub mod spectrum;
 pub mod texture;
 

@@ -1,0 +1,192 @@
+//! The path-tracing loop ([`PathIntegrator::li`]) and next-event estimation.
+
+use super::{LightStrategy, PathIntegrator, PathStats, sqr};
+use crate::bsdf::material::BsdfContext;
+use crate::bsdf::{Bsdf, TransportMode, power_heuristic};
+use crate::light::LightSampleContext;
+use crate::math::{Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
+use crate::scene::Scene;
+use crate::spectrum::Rgb;
+use lowdisc::pixel::PixelSampler;
+
+/// The sample values one scattering vertex uses, drawn in the documented order.
+struct VertexSamples {
+    light_choice: f32,
+    light: [f32; 2],
+    lobe: f32,
+    bsdf: [f32; 2],
+    rr: f32,
+}
+
+impl VertexSamples {
+    #[inline]
+    fn draw<S: PixelSampler>(s: &mut S) -> Self {
+        let light_choice = s.get_1d();
+        let light = s.get_2d();
+        let lobe = s.get_1d();
+        let bsdf = s.get_2d();
+        let rr = s.get_1d();
+        VertexSamples {
+            light_choice,
+            light,
+            lobe,
+            bsdf,
+            rr,
+        }
+    }
+}
+
+impl PathIntegrator {
+    /// Radiance arriving at the camera along `ray` (unit direction), drawing
+    /// every random number from `sampler` (whose pixel sample has been
+    /// started and whose pixel and lens dimensions have been consumed).
+    pub fn li<S: PixelSampler>(
+        &self,
+        scene: &Scene,
+        mut ray: Ray,
+        sampler: &mut S,
+        stats: &mut PathStats,
+    ) -> Rgb {
+        let mut l = Rgb::ZERO;
+        let mut beta = Rgb::ONE;
+        let mut depth = 0u32;
+        let mut specular_bounce = false;
+        let mut eta_scale = 1.0f32;
+        // Density of the BSDF sample that produced `ray`, and where it started.
+        let mut p_b = 1.0f32;
+        let mut prev_ctx = LightSampleContext::at(ray.o);
+        let lights = scene.lights();
+        loop {
+            stats.rays += 1;
+            let Some(sh) = scene.intersect(&ray) else {
+                for &i in scene.infinite_lights() {
+                    let light = &lights[i];
+                    let le = light.le(&ray);
+                    if le.is_black() {
+                        continue;
+                    }
+                    let p_l = || scene.light_sampler().pmf(i) * light.pdf_li(&prev_ctx, ray.d);
+                    if let Some(w) = self.emission_weight(depth, specular_bounce, p_b, p_l) {
+                        l += beta * le * w;
+                    }
+                }
+                break;
+            };
+            let surf = sh.hit.surface;
+            let wo = -ray.d;
+            if let Some(li) = sh.light {
+                let light = &lights[li as usize];
+                let le = light.l(surf.p, surf.ng, surf.uv, wo);
+                if !le.is_black() {
+                    let p_l = || {
+                        scene.light_sampler().pmf(li as usize)
+                            * light.pdf_li_hit(&prev_ctx, surf.p, surf.ng)
+                    };
+                    if let Some(w) = self.emission_weight(depth, specular_bounce, p_b, p_l) {
+                        l += beta * le * w;
+                    }
+                }
+            }
+            if depth == self.max_depth {
+                break;
+            }
+            depth += 1;
+            let u = VertexSamples::draw(sampler);
+            let material = &scene.materials()[sh.material as usize];
+            let bsdf = material.bsdf(&BsdfContext {
+                ns: surf.ns,
+                dpdus: surf.dpdu,
+                seed: self.bsdf_seed,
+            });
+            let flags = bsdf.flags();
+            let ctx = LightSampleContext::new(surf.p, surf.ng, surf.ns);
+            if flags.is_non_specular() && self.strategy != LightStrategy::BsdfOnly {
+                let ld = self.sample_ld(scene, &bsdf, &ctx, wo, &u, stats);
+                l += beta * ld;
+            }
+            let Some(bs) = bsdf.sample_f(wo, u.lobe, u.bsdf, TransportMode::Radiance) else {
+                break;
+            };
+            beta *= bs.f * (bs.wi.abs_dot(surf.ns) / bs.pdf);
+            p_b = if bs.pdf_is_proportional {
+                bsdf.pdf(wo, bs.wi, TransportMode::Radiance)
+            } else {
+                bs.pdf
+            };
+            specular_bounce = bs.is_specular();
+            if bs.is_transmission() {
+                eta_scale *= sqr(bs.eta);
+            }
+            prev_ctx = ctx;
+            ray = spawn_ray(surf.p, surf.ng, bs.wi);
+            if beta.is_black() {
+                break;
+            }
+            let m = (beta * eta_scale).max_component();
+            if m < 1.0 && depth > 1 {
+                let q = (1.0 - m).max(0.0);
+                if u.rr < q {
+                    break;
+                }
+                beta /= 1.0 - q;
+            }
+        }
+        l
+    }
+
+    /// The weight of emission reached by a BSDF-sampled (or camera) ray, or
+    /// `None` when this strategy does not count it. `p_l` computes the
+    /// light-sampling density of the same direction.
+    #[inline]
+    fn emission_weight(
+        &self,
+        depth: u32,
+        specular_bounce: bool,
+        p_b: f32,
+        p_l: impl FnOnce() -> f32,
+    ) -> Option<f32> {
+        if depth == 0 || specular_bounce {
+            return Some(1.0);
+        }
+        match self.strategy {
+            LightStrategy::BsdfOnly => Some(1.0),
+            LightStrategy::LightOnly => None,
+            LightStrategy::Mis => Some(power_heuristic(p_b, p_l())),
+        }
+    }
+
+    /// Next-event estimation: one light chosen by power, one sample of it,
+    /// a shadow ray, weighted against BSDF sampling by the power heuristic.
+    fn sample_ld(
+        &self,
+        scene: &Scene,
+        bsdf: &Bsdf,
+        ctx: &LightSampleContext,
+        wo: Vec3,
+        u: &VertexSamples,
+        stats: &mut PathStats,
+    ) -> Rgb {
+        let Some((index, pmf)) = scene.light_sampler().sample(u.light_choice) else {
+            return Rgb::ZERO;
+        };
+        let light = &scene.lights()[index];
+        let Some(ls) = light.sample_li(ctx, u.light) else {
+            return Rgb::ZERO;
+        };
+        let f = bsdf.f(wo, ls.wi, TransportMode::Radiance) * ls.wi.abs_dot(ctx.ns);
+        if f.is_black() || !(pmf > 0.0) {
+            return Rgb::ZERO;
+        }
+        stats.rays += 1;
+        let target = offset_ray_origin(ls.p_light, ls.n_light, ctx.p - ls.p_light);
+        if scene.intersect_p(&spawn_ray_to(ctx.p, ctx.n, target), 1.0 - SHADOW_EPSILON) {
+            return Rgb::ZERO;
+        }
+        let p_l = pmf * ls.pdf;
+        if ls.is_delta || self.strategy == LightStrategy::LightOnly {
+            return f * ls.l / p_l;
+        }
+        let p_b = bsdf.pdf(wo, ls.wi, TransportMode::Radiance);
+        f * ls.l * (power_heuristic(p_l, p_b) / p_l)
+    }
+}

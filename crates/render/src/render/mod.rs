@@ -1,0 +1,325 @@
+//! The render loop: the image is cut into fixed square tiles, rendered in
+//! parallel with rayon, and merged in tile order.
+//!
+//! **Determinism.** Tile `k` (row-major order over the film's pixel bounds)
+//! gets its own copy of the pixel sampler, `sampler.with_stream(k)`, and its
+//! own [`FilmTile`] of the scene's [`Film`]; a tile's
+//! result depends only on the scene, the options and `k`, and tiles are merged
+//! in order. The image and every counter are therefore bit-identical whatever
+//! the number of threads.
+//!
+//! **Non-finite samples.** A camera sample whose radiance is NaN or infinite is
+//! counted in [`RenderStats::nonfinite_samples`] and dropped by the film
+//! (neither its value nor its filter weight reaches the pixel); it is never
+//! written.
+//!
+//! **Progress** goes through a [`ProgressSink`] (any `Fn(Progress) + Sync`
+//! closure): the library itself never prints.
+
+mod error;
+
+pub use error::RenderError;
+
+use crate::camera::camera_sample;
+use crate::film::{Film, FilmTile, PixelBounds};
+use crate::integrator::{MAX_DEPTH_LIMIT, PathIntegrator, PathStats};
+use crate::scene::Scene;
+use crate::spectrum::Rgb;
+use lowdisc::catalog::{SamplerConfig, SamplerName};
+use lowdisc::pixel::{PixelSampler, Sampler};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+/// The most samples per pixel accepted.
+pub const MAX_SPP: u32 = 1 << 24;
+/// The most worker threads accepted.
+pub const MAX_THREADS: usize = 1024;
+
+/// How to render.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// The pixel sampler.
+    pub sampler: SamplerName,
+    /// Seed of the sampler's randomization (and of the BSDFs' random walks).
+    pub seed: u64,
+    /// Samples per pixel.
+    pub spp: u32,
+    /// The path tracer.
+    pub integrator: PathIntegrator,
+    /// Worker threads; `None` uses rayon's global pool (all cores).
+    pub threads: Option<usize>,
+    /// Tile side in pixels.
+    pub tile_size: u32,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            sampler: SamplerName::ZSobol,
+            seed: 0,
+            spp: 16,
+            integrator: PathIntegrator::default(),
+            threads: None,
+            tile_size: 16,
+        }
+    }
+}
+
+impl RenderOptions {
+    /// Checks every field's range.
+    pub fn validate(&self) -> Result<(), RenderError> {
+        let bad = |m: String| Err(RenderError::InvalidOptions(m));
+        if self.spp == 0 || self.spp > MAX_SPP {
+            return bad(format!(
+                "samples per pixel {} must be between 1 and {MAX_SPP}",
+                self.spp
+            ));
+        }
+        if self.integrator.max_depth > MAX_DEPTH_LIMIT {
+            return bad(format!(
+                "max depth {} exceeds {MAX_DEPTH_LIMIT}",
+                self.integrator.max_depth
+            ));
+        }
+        if self.tile_size == 0 || self.tile_size > 4096 {
+            return bad(format!(
+                "tile size {} must be between 1 and 4096",
+                self.tile_size
+            ));
+        }
+        if let Some(t) = self.threads {
+            if t == 0 || t > MAX_THREADS {
+                return bad(format!(
+                    "thread count {t} must be between 1 and {MAX_THREADS}"
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A progress report, sent after every finished tile.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Progress {
+    /// Tiles finished.
+    pub tiles_done: usize,
+    /// Tiles in the image.
+    pub tiles_total: usize,
+    /// Camera samples finished.
+    pub samples_done: u64,
+    /// Camera samples in the image.
+    pub samples_total: u64,
+    /// Rays traced so far.
+    pub rays: u64,
+}
+
+/// Receives progress reports (from worker threads, in completion order).
+pub trait ProgressSink: Sync {
+    /// Called after each tile.
+    fn report(&self, p: Progress);
+}
+
+impl<F: Fn(Progress) + Sync> ProgressSink for F {
+    fn report(&self, p: Progress) {
+        self(p)
+    }
+}
+
+/// A sink that ignores every report.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NoProgress;
+
+impl ProgressSink for NoProgress {
+    fn report(&self, _: Progress) {}
+}
+
+/// What a render counted.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RenderStats {
+    /// Rays traced (camera, continuation, shadow).
+    pub rays: u64,
+    /// Camera samples taken.
+    pub samples: u64,
+    /// Samples dropped because their radiance was NaN or infinite.
+    pub nonfinite_samples: u64,
+    /// Worker threads used.
+    pub threads: usize,
+    /// Wall-clock time of the render loop.
+    pub time: Duration,
+}
+
+impl RenderStats {
+    /// Rays per second (0 when no time elapsed).
+    pub fn rays_per_second(&self) -> f64 {
+        let s = self.time.as_secs_f64();
+        if s > 0.0 { self.rays as f64 / s } else { 0.0 }
+    }
+}
+
+/// A rendered film, its image (linear RGB, row-major, top row first, the
+/// film's pixel bounds) and the render's counters.
+#[derive(Clone, Debug)]
+pub struct RenderOutput {
+    /// The film with every tile merged (write it with [`Film::write`]).
+    pub film: Film,
+    /// The film's pixel values.
+    pub image: lowdisc_image::RgbImage,
+    /// Counters and timing.
+    pub stats: RenderStats,
+    /// Conditions worth telling the user about (e.g. a scene without lights).
+    pub warnings: Vec<String>,
+}
+
+impl RenderOutput {
+    /// Mean of every pixel, per channel.
+    pub fn mean(&self) -> [f64; 3] {
+        let mut m = [0.0f64; 3];
+        for p in self.image.pixels() {
+            for c in 0..3 {
+                m[c] += f64::from(p[c]);
+            }
+        }
+        let n = self.image.pixel_count().max(1) as f64;
+        m.map(|v| v / n)
+    }
+}
+
+/// What one tile produced.
+struct TileResult {
+    film: FilmTile,
+    stats: PathStats,
+    samples: u64,
+}
+
+/// Renders `scene` with `opts`, reporting progress to `progress`.
+pub fn render(
+    scene: &Scene,
+    opts: &RenderOptions,
+    progress: &dyn ProgressSink,
+) -> Result<RenderOutput, RenderError> {
+    opts.validate()?;
+    let mut film = Film::new(&scene.film().params).map_err(RenderError::Film)?;
+    let [width, height] = film.full_resolution();
+    let mut config = SamplerConfig::new(opts.sampler);
+    config.seed = opts.seed;
+    config.spp = opts.spp;
+    config.resolution = [width, height];
+    let sampler = config.build()?;
+    let mut warnings = Vec::new();
+    if scene.lights().is_empty() {
+        warnings.push("the scene has no lights: the image is black".to_string());
+    }
+    let rects = film.pixel_bounds().tiles(opts.tile_size);
+    let total = Totals {
+        tiles: rects.len(),
+        samples: film.pixel_bounds().area() as u64 * u64::from(opts.spp),
+        done: AtomicUsize::new(0),
+        samples_done: AtomicU64::new(0),
+        rays: AtomicU64::new(0),
+    };
+    let start = Instant::now();
+    let run = || -> Vec<TileResult> {
+        rects
+            .par_iter()
+            .enumerate()
+            .map(|(k, rect)| {
+                let r = render_tile(scene, opts, &sampler, k as u64, film.tile(*rect));
+                total.finished(&r, progress);
+                r
+            })
+            .collect()
+    };
+    let (results, threads) = match opts.threads {
+        None => (run(), rayon::current_num_threads()),
+        Some(n) => {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| RenderError::ThreadPool(e.to_string()))?;
+            (pool.install(run), n)
+        }
+    };
+    let mut stats = RenderStats {
+        threads,
+        ..RenderStats::default()
+    };
+    for r in &results {
+        film.merge_tile(&r.film);
+        stats.rays += r.stats.rays;
+        stats.samples += r.samples;
+    }
+    stats.nonfinite_samples = film.nonfinite_count();
+    stats.time = start.elapsed();
+    if stats.nonfinite_samples > 0 {
+        warnings.push(format!(
+            "{} samples had NaN or infinite radiance and were dropped",
+            stats.nonfinite_samples
+        ));
+    }
+    let image = film.to_image().map_err(RenderError::Film)?;
+    Ok(RenderOutput {
+        film,
+        image,
+        stats,
+        warnings,
+    })
+}
+
+/// Shared progress counters.
+struct Totals {
+    tiles: usize,
+    samples: u64,
+    done: AtomicUsize,
+    samples_done: AtomicU64,
+    rays: AtomicU64,
+}
+
+impl Totals {
+    fn finished(&self, r: &TileResult, sink: &dyn ProgressSink) {
+        let tiles_done = self.done.fetch_add(1, Ordering::Relaxed) + 1;
+        let samples_done = self.samples_done.fetch_add(r.samples, Ordering::Relaxed) + r.samples;
+        let rays = self.rays.fetch_add(r.stats.rays, Ordering::Relaxed) + r.stats.rays;
+        sink.report(Progress {
+            tiles_done,
+            tiles_total: self.tiles,
+            samples_done,
+            samples_total: self.samples,
+            rays,
+        });
+    }
+}
+
+/// Renders one tile with its own sampler stream into its film tile.
+fn render_tile(
+    scene: &Scene,
+    opts: &RenderOptions,
+    sampler: &Sampler,
+    k: u64,
+    mut film: FilmTile,
+) -> TileResult {
+    let mut sampler = sampler.with_stream(k);
+    let mut stats = PathStats::default();
+    let mut integrator = opts.integrator;
+    integrator.bsdf_seed = opts.seed;
+    let (camera, filter) = (scene.camera(), &scene.film().filter);
+    let bounds: PixelBounds = film.bounds();
+    let mut samples = 0;
+    for [x, y] in bounds.pixels() {
+        for s in 0..opts.spp {
+            sampler.start_pixel_sample([x as u32, y as u32], s, 0);
+            let u_film = sampler.get_pixel_2d();
+            let u_lens = sampler.get_2d();
+            let cs = camera_sample(filter, [x, y], u_film, u_lens);
+            let ray = camera.generate_ray_for(&cs);
+            let l: Rgb = integrator.li(scene, ray, &mut sampler, &mut stats);
+            film.add_sample([x, y], l, cs.filter_weight);
+            samples += 1;
+        }
+    }
+    TileResult {
+        film,
+        stats,
+        samples,
+    }
+}

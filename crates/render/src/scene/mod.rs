@@ -1,0 +1,315 @@
+//! The renderable scene: shapes in a BVH with a material (and optionally an
+//! area light) per shape, the lights with their power-proportional sampler,
+//! the camera and the film settings.
+//!
+//! Scenes are put together with a [`SceneBuilder`] (the built-in Cornell box
+//! in [`crate::cornell`], and the pbrt-v4 scene loader) and are immutable
+//! afterwards, so one `&Scene` is shared by every render thread.
+//!
+//! Area lights: every primitive of an emissive shape (each triangle of a
+//! mesh, as in pbrt) becomes one [`DiffuseAreaLight`] in [`Scene::lights`];
+//! lights at infinity are preprocessed with the scene bounds.
+//!
+//! [`load_scene_file`] is the hook the command line calls for a scene path.
+
+use crate::accel::{Accel, Hit};
+use crate::bsdf::Material;
+use crate::bvh::BvhStats;
+use crate::camera::{PerspectiveCamera, PerspectiveParams};
+use crate::film::FilmParams;
+use crate::filter::Filter;
+use crate::geometry::{Disk, Prim, ShapeSet, Sphere, TriangleMesh};
+use crate::light::{DiffuseAreaLight, Light, LightSampler, LightType};
+use crate::math::{Bounds3, Ray, Transform};
+use crate::render::RenderError;
+use crate::spectrum::Rgb;
+use std::path::Path;
+
+/// Diffuse emission of a shape (pbrt's `AreaLightSource "diffuse"`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emission {
+    /// Emitted radiance, `scale` already applied.
+    pub l: Rgb,
+    /// Emit from both sides of the surface.
+    pub two_sided: bool,
+}
+
+/// Where the camera is and how it projects.
+#[derive(Clone, Debug)]
+pub struct CameraSpec {
+    /// World-from-camera transform (pbrt's camera space: looks down +z, y up).
+    pub world_from_camera: Transform,
+    /// Perspective parameters.
+    pub params: PerspectiveParams,
+}
+
+/// Film settings: pbrt's `Film` parameters (resolution, crop, sensor), the
+/// pixel filter, and the exposure applied when writing PNG.
+#[derive(Clone, Debug, Default)]
+pub struct FilmSettings {
+    /// The film's parameters.
+    pub params: FilmParams,
+    /// Pixel filter (importance-sampled by the pixel dimensions).
+    pub filter: Filter,
+    /// Factor applied to radiance when writing 8-bit output.
+    pub exposure: f32,
+}
+
+impl FilmSettings {
+    /// Settings for a `resolution` image with `filter`, exposure 1, and
+    /// otherwise pbrt's defaults.
+    pub fn new(resolution: [u32; 2], filter: Filter) -> Self {
+        FilmSettings {
+            params: FilmParams {
+                resolution,
+                ..FilmParams::default()
+            },
+            filter,
+            exposure: 1.0,
+        }
+    }
+}
+
+/// Per-shape data: material index and the index of its first area light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct ShapeInfo {
+    material: u32,
+    /// For emissive shapes, the light of primitive `k` is `first_light + k`.
+    first_light: Option<u32>,
+}
+
+/// Collects shapes, materials, lights and camera, then builds a [`Scene`].
+#[derive(Clone, Debug, Default)]
+pub struct SceneBuilder {
+    shapes: ShapeSet,
+    mesh_info: Vec<(u32, Option<Emission>)>,
+    sphere_info: Vec<(u32, Option<Emission>)>,
+    disk_info: Vec<(u32, Option<Emission>)>,
+    materials: Vec<Material>,
+    lights: Vec<Light>,
+    camera: Option<CameraSpec>,
+    film: FilmSettings,
+}
+
+impl SceneBuilder {
+    /// An empty scene.
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// Adds a material; returns its index.
+    pub fn add_material(&mut self, m: Material) -> u32 {
+        self.materials.push(m);
+        (self.materials.len() - 1) as u32
+    }
+    /// Adds a triangle mesh with a material and optional emission.
+    pub fn add_mesh(&mut self, mesh: TriangleMesh, material: u32, emission: Option<Emission>) {
+        self.shapes.add_mesh(mesh);
+        self.mesh_info.push((material, emission));
+    }
+    /// Adds a sphere with a material and optional emission.
+    pub fn add_sphere(&mut self, s: Sphere, material: u32, emission: Option<Emission>) {
+        self.shapes.add_sphere(s);
+        self.sphere_info.push((material, emission));
+    }
+    /// Adds a disk with a material and optional emission.
+    pub fn add_disk(&mut self, d: Disk, material: u32, emission: Option<Emission>) {
+        self.shapes.add_disk(d);
+        self.disk_info.push((material, emission));
+    }
+    /// Adds a light that is not attached to a shape (point, infinite...).
+    pub fn add_light(&mut self, l: Light) {
+        self.lights.push(l);
+    }
+    /// Sets the camera.
+    pub fn set_camera(&mut self, c: CameraSpec) {
+        self.camera = Some(c);
+    }
+    /// Sets the film settings.
+    pub fn set_film(&mut self, f: FilmSettings) {
+        self.film = f;
+    }
+
+    /// Validates indices and emission, builds the BVH, the area lights and
+    /// the light sampler.
+    pub fn build(self) -> Result<Scene, RenderError> {
+        let nmat = self.materials.len() as u32;
+        let camera_spec = self
+            .camera
+            .ok_or_else(|| RenderError::InvalidScene("the scene has no camera".into()))?;
+        let camera = PerspectiveCamera::new(
+            camera_spec.world_from_camera,
+            self.film.params.resolution,
+            &camera_spec.params,
+        )?;
+        let accel = Accel::build(self.shapes);
+        let shapes = accel.shapes();
+        let mut lights = Vec::new();
+        let mut infos = [Vec::new(), Vec::new(), Vec::new()];
+        let groups = [&self.mesh_info, &self.sphere_info, &self.disk_info];
+        for (kind, group) in groups.into_iter().enumerate() {
+            for (i, &(material, emission)) in group.iter().enumerate() {
+                if material >= nmat {
+                    return Err(RenderError::InvalidScene(format!(
+                        "material index {material} out of range ({nmat} materials)"
+                    )));
+                }
+                let prims: Vec<Prim> = match kind {
+                    0 => shapes.mesh_prims(i as u32).collect(),
+                    1 => vec![Prim::Sphere(i as u32)],
+                    _ => vec![Prim::Disk(i as u32)],
+                };
+                let first_light = match emission {
+                    Some(e) if !e.l.is_black() => {
+                        let first = lights.len() as u32;
+                        for p in prims {
+                            let light =
+                                DiffuseAreaLight::from_prim(shapes, p, e.l, 1.0, e.two_sided)
+                                    .map_err(|err| RenderError::InvalidScene(err.to_string()))?;
+                            lights.push(Light::Area(light));
+                        }
+                        Some(first)
+                    }
+                    _ => None,
+                };
+                infos[kind].push(ShapeInfo {
+                    material,
+                    first_light,
+                });
+            }
+        }
+        lights.extend(self.lights);
+        let bounds = accel.bounds();
+        for l in &mut lights {
+            l.preprocess(&bounds);
+        }
+        let light_sampler = LightSampler::new(&lights);
+        let infinite_lights = (0..lights.len())
+            .filter(|&i| lights[i].light_type() == LightType::Infinite)
+            .collect();
+        let [mesh_info, sphere_info, disk_info] = infos;
+        Ok(Scene {
+            accel,
+            materials: self.materials,
+            mesh_info,
+            sphere_info,
+            disk_info,
+            lights,
+            infinite_lights,
+            light_sampler,
+            camera_spec,
+            camera,
+            film: self.film,
+        })
+    }
+}
+
+/// A ray hit with the data the integrator needs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneHit {
+    /// Primitive and surface.
+    pub hit: Hit,
+    /// Material index into [`Scene::materials`].
+    pub material: u32,
+    /// Index of the area light of the hit primitive, if it emits.
+    pub light: Option<u32>,
+}
+
+/// A built scene, ready to render.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    accel: Accel,
+    materials: Vec<Material>,
+    mesh_info: Vec<ShapeInfo>,
+    sphere_info: Vec<ShapeInfo>,
+    disk_info: Vec<ShapeInfo>,
+    lights: Vec<Light>,
+    infinite_lights: Vec<usize>,
+    light_sampler: LightSampler,
+    camera_spec: CameraSpec,
+    camera: PerspectiveCamera,
+    film: FilmSettings,
+}
+
+impl Scene {
+    /// Closest hit along `ray` (any `t > 0`).
+    #[inline]
+    pub fn intersect(&self, ray: &Ray) -> Option<SceneHit> {
+        let hit = self.accel.intersect(ray, f32::INFINITY)?;
+        let (info, k) = match hit.prim {
+            Prim::Triangle { mesh, tri } => (self.mesh_info[mesh as usize], tri),
+            Prim::Sphere(i) => (self.sphere_info[i as usize], 0),
+            Prim::Disk(i) => (self.disk_info[i as usize], 0),
+        };
+        Some(SceneHit {
+            hit,
+            material: info.material,
+            light: info.first_light.map(|f| f + k),
+        })
+    }
+    /// True when anything is hit in `(0, t_max)` (shadow rays).
+    #[inline]
+    pub fn intersect_p(&self, ray: &Ray, t_max: f32) -> bool {
+        self.accel.intersect_p(ray, t_max)
+    }
+    /// The shapes.
+    pub fn shapes(&self) -> &ShapeSet {
+        self.accel.shapes()
+    }
+    /// The materials.
+    pub fn materials(&self) -> &[Material] {
+        &self.materials
+    }
+    /// Every light (area lights first, one per emissive primitive).
+    pub fn lights(&self) -> &[Light] {
+        &self.lights
+    }
+    /// Indices of the infinite lights (seen by escaping rays).
+    pub fn infinite_lights(&self) -> &[usize] {
+        &self.infinite_lights
+    }
+    /// The power-proportional light chooser.
+    pub fn light_sampler(&self) -> &LightSampler {
+        &self.light_sampler
+    }
+    /// The camera.
+    pub fn camera(&self) -> &PerspectiveCamera {
+        &self.camera
+    }
+    /// The film settings.
+    pub fn film(&self) -> &FilmSettings {
+        &self.film
+    }
+    /// World bounds of the geometry.
+    pub fn bounds(&self) -> Bounds3 {
+        self.accel.bounds()
+    }
+    /// BVH statistics.
+    pub fn bvh_stats(&self) -> &BvhStats {
+        self.accel.stats()
+    }
+    /// Total number of primitives.
+    pub fn prim_count(&self) -> usize {
+        self.accel.shapes().prim_count()
+    }
+
+    /// Changes the film resolution (the camera is rebuilt for it).
+    pub fn set_resolution(&mut self, resolution: [u32; 2]) -> Result<(), RenderError> {
+        self.camera = PerspectiveCamera::new(
+            self.camera_spec.world_from_camera,
+            resolution,
+            &self.camera_spec.params,
+        )?;
+        self.film.params.resolution = resolution;
+        Ok(())
+    }
+}
+
+/// Loads a scene file. The pbrt-v4 loader is not part of the crate yet, so
+/// this returns [`RenderError::NotImplemented`]; it is the single place the
+/// command line goes through, to be pointed at the loader when it lands.
+pub fn load_scene_file(path: &Path) -> Result<Scene, RenderError> {
+    let _ = path;
+    Err(RenderError::NotImplemented(
+        "scene loading is not implemented yet".into(),
+    ))
+}
