@@ -1,0 +1,277 @@
+//! `lowdisc render`: path-trace a scene (for now the built-in Cornell box)
+//! with any of lowdisc's samplers and write EXR or PNG.
+//!
+//! Arguments become a validated [`RenderConfig`] before any work starts; the
+//! render itself runs in the `lowdisc-render` library, which reports progress
+//! through a callback that drives an `indicatif` bar here (only when stderr is
+//! a terminal, and never with `--quiet`). Warnings go to stderr as
+//! `warning: ...` lines (also suppressed by `--quiet`); `--stats` prints the
+//! counters and the time per phase to stdout.
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use lowdisc::catalog::SamplerName;
+use lowdisc_render::cornell::cornell_box;
+use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
+use lowdisc_render::render::{MAX_SPP, MAX_THREADS, Progress, RenderOptions, render};
+use lowdisc_render::scene::{Scene, load_scene_file};
+
+use crate::parse;
+
+/// The largest image side `--res` accepts.
+pub const MAX_SIDE: u32 = 16_384;
+/// The most pixels `--res` accepts (a 16k x 16k image).
+pub const MAX_PIXELS: u64 = 1 << 28;
+
+/// The long help of `render`.
+pub const LONG_ABOUT: &str = "\
+Path-trace a scene and write the image.\n\
+\n\
+Without SCENE the built-in Cornell box is rendered (the published Cornell\n\
+Box Data geometry, RGB reflectances, 35 mm camera). Loading pbrt-v4 scene\n\
+files is not implemented yet.\n\
+\n\
+The renderer is a unidirectional path tracer with next-event estimation and\n\
+MIS, in RGB. Every random decision comes from the chosen pixel sampler, in a\n\
+fixed order of dimensions (film position, lens, then seven per bounce: light\n\
+choice, light position, BSDF lobe, BSDF direction, Russian roulette). The\n\
+output is bit-identical for the same options whatever --threads is.\n\
+\n\
+Output: .exr (linear float), .png (8-bit sRGB), .pfm or .hdr, written to a\n\
+temporary file and renamed into place.\n\
+";
+
+/// The arguments of `render`.
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// A pbrt-v4 scene file (omit for the built-in Cornell box).
+    scene: Option<PathBuf>,
+    /// Pixel sampler: independent, stratified, halton, halton-owen, sobol,
+    /// sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro,
+    /// padded-sobol, zsobol.
+    #[arg(long, short = 's', value_name = "NAME", default_value = "zsobol")]
+    sampler: String,
+    /// Samples per pixel.
+    #[arg(long, value_name = "N", default_value_t = 16)]
+    spp: u32,
+    /// Seed of every random choice.
+    #[arg(long, value_name = "S", default_value_t = 0)]
+    seed: u64,
+    /// Image resolution [default: 512x512 for the Cornell box].
+    #[arg(long, value_name = "WxH", allow_hyphen_values = true)]
+    res: Option<String>,
+    /// Maximum number of bounces (pbrt's maxdepth).
+    #[arg(long, value_name = "D", default_value_t = 5)]
+    maxdepth: u32,
+    /// Worker threads [default: all cores].
+    #[arg(long, value_name = "T")]
+    threads: Option<usize>,
+    /// Environment map replacing a scene's missing one (scene files only).
+    #[arg(long, value_name = "FILE")]
+    envmap: Option<PathBuf>,
+    /// Output image: .exr, .png, .pfm or .hdr.
+    #[arg(long, short = 'o', value_name = "OUT", default_value = "render.exr")]
+    output: PathBuf,
+    /// Print rays traced, rays/s, BVH statistics and time per phase.
+    #[arg(long)]
+    stats: bool,
+    /// No progress bar and no warnings.
+    #[arg(long, short = 'q')]
+    quiet: bool,
+}
+
+/// A validated `render` invocation.
+#[derive(Debug, Clone)]
+pub struct RenderConfig {
+    /// Scene file, or `None` for the Cornell box.
+    pub scene: Option<PathBuf>,
+    /// Resolution override.
+    pub resolution: Option<[u32; 2]>,
+    /// Render options.
+    pub options: RenderOptions,
+    /// Output file.
+    pub output: PathBuf,
+    /// Print statistics.
+    pub stats: bool,
+    /// Suppress progress and warnings.
+    pub quiet: bool,
+}
+
+impl RenderArgs {
+    /// Checks every argument and builds the configuration.
+    pub fn into_config(self) -> Result<RenderConfig> {
+        let sampler: SamplerName = parse::sampler_name(&self.sampler)?;
+        if self.spp == 0 || self.spp > MAX_SPP {
+            bail!("--spp must be between 1 and {MAX_SPP}, got {}", self.spp);
+        }
+        if self.maxdepth > MAX_DEPTH_LIMIT {
+            bail!(
+                "--maxdepth must be at most {MAX_DEPTH_LIMIT}, got {}",
+                self.maxdepth
+            );
+        }
+        if let Some(t) = self.threads {
+            if t == 0 || t > MAX_THREADS {
+                bail!("--threads must be between 1 and {MAX_THREADS}, got {t}");
+            }
+        }
+        let resolution = self.res.as_deref().map(resolution).transpose()?;
+        if self.envmap.is_some() && self.scene.is_none() {
+            bail!("--envmap applies to scene files; the built-in Cornell box has no environment");
+        }
+        check_output(&self.output)?;
+        Ok(RenderConfig {
+            scene: self.scene,
+            resolution,
+            options: RenderOptions {
+                sampler,
+                seed: self.seed,
+                spp: self.spp,
+                integrator: PathIntegrator {
+                    max_depth: self.maxdepth,
+                    ..PathIntegrator::default()
+                },
+                threads: self.threads,
+                tile_size: 16,
+            },
+            output: self.output,
+            stats: self.stats,
+            quiet: self.quiet,
+        })
+    }
+}
+
+/// `WxH` with both sides in `1..=MAX_SIDE` and at most `MAX_PIXELS` pixels.
+fn resolution(text: &str) -> Result<[u32; 2]> {
+    let res = parse::resolution(text)?;
+    if res[0] > MAX_SIDE || res[1] > MAX_SIDE || u64::from(res[0]) * u64::from(res[1]) > MAX_PIXELS
+    {
+        bail!("--res `{text}` is too large: each side must be at most {MAX_SIDE} pixels");
+    }
+    Ok(res)
+}
+
+/// The output must have a known extension and an existing directory.
+fn check_output(path: &Path) -> Result<()> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if !matches!(ext.as_deref(), Some("exr" | "png" | "pfm" | "hdr")) {
+        bail!(
+            "output `{}` must end in .exr, .png, .pfm or .hdr",
+            path.display()
+        );
+    }
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if !dir.is_dir() {
+        bail!("output directory `{}` does not exist", dir.display());
+    }
+    Ok(())
+}
+
+/// Time spent in each phase.
+#[derive(Debug, Default)]
+struct Phases {
+    load: Duration,
+    render: Duration,
+    write: Duration,
+}
+
+/// Loads (or builds) the scene, renders it and writes the image.
+pub fn run(config: &RenderConfig) -> Result<()> {
+    let t0 = Instant::now();
+    let mut scene: Scene = match &config.scene {
+        None => cornell_box(config.resolution.unwrap_or([512, 512]))?,
+        Some(path) => {
+            let mut s = load_scene_file(path)?;
+            if let Some(r) = config.resolution {
+                s.set_resolution(r)?;
+            }
+            s
+        }
+    };
+    if let (None, Some(r)) = (&config.scene, config.resolution) {
+        scene.set_resolution(r)?;
+    }
+    let mut phases = Phases {
+        load: t0.elapsed(),
+        ..Phases::default()
+    };
+
+    let bar = progress_bar(config);
+    let on_progress = |p: Progress| {
+        if let Some(bar) = &bar {
+            bar.set_length(p.samples_total);
+            bar.set_position(p.samples_done);
+            let secs = bar.elapsed().as_secs_f64();
+            if secs > 0.0 {
+                bar.set_message(format!("{:.2} Mrays/s", p.rays as f64 / secs / 1e6));
+            }
+        }
+    };
+    let t1 = Instant::now();
+    let out = render(&scene, &config.options, &on_progress)?;
+    phases.render = t1.elapsed();
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    if !config.quiet {
+        for w in &out.warnings {
+            eprintln!("warning: {w}");
+        }
+    }
+    let t2 = Instant::now();
+    out.film
+        .write(&config.output, scene.film().exposure)
+        .with_context(|| format!("cannot write `{}`", config.output.display()))?;
+    phases.write = t2.elapsed();
+    if config.stats {
+        print_stats(&scene, &out, &phases);
+    }
+    Ok(())
+}
+
+fn progress_bar(config: &RenderConfig) -> Option<ProgressBar> {
+    if config.quiet || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = ProgressBar::new(1);
+    let style = ProgressStyle::with_template("{bar:40} {percent:>3}% {msg} ETA {eta}")
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style);
+    Some(bar)
+}
+
+fn print_stats(scene: &Scene, out: &lowdisc_render::render::RenderOutput, phases: &Phases) {
+    let s = &out.stats;
+    let b = scene.bvh_stats();
+    println!("primitives        {}", scene.prim_count());
+    println!("lights            {}", scene.lights().len());
+    println!("{b}");
+    println!("samples           {}", s.samples);
+    println!("rays traced       {}", s.rays);
+    println!(
+        "rays/s            {:.0} ({:.2} M)",
+        s.rays_per_second(),
+        s.rays_per_second() / 1e6
+    );
+    println!("nonfinite samples {}", s.nonfinite_samples);
+    println!("threads           {}", s.threads);
+    let build = b.build_time.as_secs_f64();
+    println!(
+        "time load         {:.3} s",
+        (phases.load.as_secs_f64() - build).max(0.0)
+    );
+    println!("time build (BVH)  {build:.3} s");
+    println!("time render       {:.3} s", phases.render.as_secs_f64());
+    println!("time write        {:.3} s", phases.write.as_secs_f64());
+}

@@ -1,0 +1,101 @@
+//! `lowdisc render` end to end: the built-in Cornell box renders to PNG and
+//! EXR; bad input exits non-zero with one `error:` line and no panic.
+
+mod common;
+
+use common::{lowdisc, temp_dir};
+
+#[test]
+fn renders_the_cornell_box_to_png_and_exr() {
+    let dir = temp_dir("render-ok");
+    let png = dir.join("tmp.png");
+    let out = lowdisc(&[
+        "render",
+        "--res",
+        "32x32",
+        "--spp",
+        "4",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let exr = dir.join("tmp.exr");
+    let out = lowdisc(&[
+        "render",
+        "--res",
+        "16x8",
+        "--spp",
+        "2",
+        "--threads",
+        "1",
+        "--stats",
+        "--quiet",
+        "-o",
+        exr.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("rays traced") && stdout.contains("rays/s"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("BVH"), "{stdout}");
+    let bytes = std::fs::read(&exr).unwrap();
+    assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01], "EXR magic");
+    // No temporary files are left next to the output.
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+}
+
+/// Runs `lowdisc render ARGS`, expects a one-line error and no panic.
+fn fails(args: &[&str], needle: &str) {
+    let mut all = vec!["render"];
+    all.extend_from_slice(args);
+    let out = lowdisc(&all);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{all:?} should fail");
+    assert!(!stderr.contains("panicked"), "{all:?} panicked: {stderr}");
+    assert!(
+        stderr.contains(needle),
+        "{all:?}: `{needle}` not in {stderr}"
+    );
+}
+
+#[test]
+fn bad_input_is_a_clean_error() {
+    let dir = temp_dir("render-bad");
+    let o = dir.join("x.png");
+    let o = o.to_str().unwrap();
+    fails(&["--res", "0x0", "-o", o], "at least 1");
+    fails(&["--res", "100000x100000", "-o", o], "too large");
+    fails(&["--res", "axb", "-o", o], "--res");
+    fails(&["--spp", "0", "-o", o], "--spp");
+    fails(&["--spp", "NaN", "-o", o], "spp");
+    fails(&["--sampler", "nope", "-o", o], "unknown sampler");
+    fails(&["--threads", "0", "-o", o], "--threads");
+    fails(&["--maxdepth", "99999999", "-o", o], "--maxdepth");
+    fails(&["-o", dir.join("x.jpg").to_str().unwrap()], ".exr");
+    fails(
+        &["-o", dir.join("missing/x.png").to_str().unwrap()],
+        "does not exist",
+    );
+    fails(
+        &["scene.pbrt", "-o", o],
+        "scene loading is not implemented yet",
+    );
+    fails(&["--envmap", "sky.exr", "-o", o], "--envmap");
+    assert!(
+        std::fs::read_dir(&dir).unwrap().next().is_none(),
+        "no output left behind"
+    );
+}
