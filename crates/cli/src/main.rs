@@ -10,12 +10,19 @@
 //! `into_config` and `run`, plus one variant in [`Command`] and one arm in
 //! [`run`].
 
+mod claim;
+mod claim_report;
+mod compose;
+mod discrepancy;
 mod figure;
+mod metric_rows;
 mod output;
 mod parse;
 mod plots;
+mod pointfile;
 mod points;
 mod render_cmd;
+mod spectrum;
 
 use std::io;
 use std::process::ExitCode;
@@ -39,6 +46,15 @@ enum Command {
     /// Draw the paper's figure: a 2x2-pixel image's samples, one panel per sampler.
     #[command(long_about = figure::LONG_ABOUT)]
     Figure(figure::FigureArgs),
+    /// Quality metrics of a point set: star discrepancy, L2 discrepancies, distances.
+    #[command(long_about = discrepancy::LONG_ABOUT)]
+    Discrepancy(discrepancy::DiscrepancyArgs),
+    /// Radially averaged power spectra of several samplers, with their points, in one picture.
+    #[command(long_about = spectrum::LONG_ABOUT)]
+    Spectrum(spectrum::SpectrumArgs),
+    /// The paper's claim, measured: star discrepancy and minimum distance per sampler.
+    #[command(long_about = claim::LONG_ABOUT)]
+    PaperClaim(claim::ClaimArgs),
     /// Path-trace a scene (default: the built-in Cornell box) to EXR or PNG.
     #[command(long_about = render_cmd::LONG_ABOUT)]
     Render(render_cmd::RenderArgs),
@@ -53,6 +69,18 @@ fn run(command: Command) -> anyhow::Result<()> {
         }
         Command::Figure(args) => figure::run(&args.into_config()?),
         Command::Render(args) => render_cmd::run(&args.into_config()?),
+        Command::Discrepancy(args) => {
+            let config = args.into_config()?;
+            discrepancy::run(&config, io::stdout().lock())
+        }
+        Command::Spectrum(args) => {
+            let config = args.into_config()?;
+            spectrum::run(&config, io::stdout().lock())
+        }
+        Command::PaperClaim(args) => {
+            let config = args.into_config()?;
+            claim::run(&config, io::stdout().lock())
+        }
     }
 }
 
