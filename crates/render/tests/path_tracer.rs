@@ -196,21 +196,26 @@ fn bsdf_light_and_mis_sampling_agree_in_the_mean() {
         m,
         None,
     );
-    // Corners ordered so that the face normal points down (-y).
-    let light = quad([
-        [-0.5, 1.5, -0.5],
-        [0.5, 1.5, -0.5],
-        [0.5, 1.5, 0.5],
-        [-0.5, 1.5, 0.5],
-    ]);
-    b.add_mesh(
-        light,
-        black,
-        Some(Emission {
-            l: Rgb::splat(3.0),
-            two_sided: false,
-        }),
-    );
+    // A 1.6 x 1.6 light at height 1.2 split into 4 x 4 quads (32 triangles,
+    // so each is chosen with probability 1/32: MIS weights that forget the
+    // choice probability are far off), face normals pointing down (-y).
+    let mut light = MeshData::default();
+    for i in 0..4 {
+        for j in 0..4 {
+            let (x, z) = (-0.8 + 0.4 * i as f32, -0.8 + 0.4 * j as f32);
+            let k = light.positions.len() as u32;
+            for (dx, dz) in [(0.0, 0.0), (0.4, 0.0), (0.4, 0.4), (0.0, 0.4)] {
+                light.positions.push(Point3::new(x + dx, 1.2, z + dz));
+            }
+            light.indices.extend([[k, k + 1, k + 2], [k, k + 2, k + 3]]);
+        }
+    }
+    let light = TriangleMesh::new(&Transform::IDENTITY, light, false).unwrap();
+    let emission = Emission {
+        l: Rgb::splat(2.0),
+        two_sided: false,
+    };
+    b.add_mesh(light, black, Some(emission));
     b.set_camera(camera(
         Point3::new(0.0, 0.6, -3.0),
         Point3::new(0.0, 0.3, 0.0),
