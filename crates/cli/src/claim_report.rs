@@ -21,10 +21,13 @@ const QUANTITIES: [Quantity; 3] = [
     }),
 ];
 
-/// `v` with four significant digits, in fixed notation.
+/// `v` with four significant digits: fixed notation, scientific below 1e-4.
 pub fn significant(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
+    }
+    if v.abs() < 1e-4 {
+        return format!("{v:.3e}");
     }
     let decimals = (3 - v.abs().log10().floor() as i32).max(0) as usize;
     format!("{v:.decimals$}")
@@ -184,5 +187,6 @@ mod tests {
         assert_eq!(significant(0.5), "0.5000");
         assert_eq!(significant(12.345), "12.35");
         assert_eq!(significant(0.0), "0");
+        assert_eq!(significant(2.3283e-10), "2.328e-10");
     }
 }
