@@ -1,0 +1,173 @@
+//! `LightSource` (point, spot, distant, infinite) and `AreaLightSource
+//! "diffuse"`; the CTM is the light-to-world transform.
+
+use super::sink::PbrtLoader;
+use super::state::AreaSpec;
+use crate::light::{
+    DistantLight, EnvLookup, ImageInfiniteLight, Light, PointLight, SpotLight, UniformInfiniteLight,
+};
+use crate::math::{Point3, Vec3};
+use crate::spectrum::Rgb;
+use pbrt_format::{Loc, ParamSet, ParseError};
+
+fn point(ps: &ParamSet, name: &str, d: [f32; 3]) -> Point3 {
+    ps.get_point3(name)
+        .map(|a| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32))
+        .unwrap_or(Vec3::new(d[0], d[1], d[2]))
+}
+
+impl PbrtLoader {
+    /// A light's spectrum parameter (pbrt-v4 normalises non-RGB spectra to
+    /// luminance 1; the default is the colour space's white).
+    fn light_rgb(&mut self, ps: &ParamSet, name: &str, loc: &Loc) -> Result<Rgb, ParseError> {
+        match ps.get_spectrum(name) {
+            Some(v) => self.spectrum_value(v, true, loc),
+            None => Ok(Rgb::ONE),
+        }
+    }
+
+    fn positive(ps: &ParamSet, name: &str) -> Option<f32> {
+        ps.get_float(name).map(|v| v as f32).filter(|&v| v > 0.0)
+    }
+
+    fn infinite_light(&mut self, ps: &ParamSet, loc: &Loc) -> Result<Light, ParseError> {
+        let ctm = self.state.cur.ctm;
+        let scale = ps.float_or("scale", 1.0) as f32;
+        let illum = Self::positive(ps, "illuminance");
+        let lerr =
+            |e: crate::light::LightError| ParseError::scene(loc, format!("infinite light: {e}"));
+        if ps.find("portal").is_some() {
+            ps.mark_used("portal");
+            self.unsupported(loc, "infinite light portals");
+        }
+        let file = ps.get_string("filename").map(|f| self.resolve(f));
+        let path = match (self.options.envmap_override.clone(), file) {
+            (Some(o), f) => {
+                let what = match &f {
+                    Some(f) => format!(
+                        "environment map {} replaced by {}",
+                        f.display(),
+                        o.display()
+                    ),
+                    None => format!(
+                        "constant infinite light replaced by environment map {}",
+                        o.display()
+                    ),
+                };
+                self.warn(loc, what);
+                if ps.find("L").is_some() {
+                    ps.mark_used("L");
+                }
+                Some(o)
+            }
+            (None, Some(f)) => {
+                if !f.is_file() {
+                    return Err(ParseError::scene(
+                        loc,
+                        format!(
+                            "environment map {} not found (use --envmap FILE to replace it)",
+                            f.display()
+                        ),
+                    ));
+                }
+                Some(f)
+            }
+            (None, None) => None,
+        };
+        Ok(match path {
+            Some(p) => Light::ImageInfinite(Box::new(
+                ImageInfiniteLight::from_file(&ctm, &p, None, EnvLookup::default(), scale, illum)
+                    .map_err(lerr)?,
+            )),
+            None => {
+                let l = self.light_rgb(ps, "L", loc)?;
+                Light::UniformInfinite(UniformInfiniteLight::new(l, scale, illum).map_err(lerr)?)
+            }
+        })
+    }
+
+    /// `LightSource "type" params`.
+    pub(super) fn light_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
+        let ctm = self.state.cur.ctm;
+        let scale = ps.float_or("scale", 1.0) as f32;
+        let lerr = |e: crate::light::LightError| ParseError::scene(loc, format!("{ty} light: {e}"));
+        let light = match ty {
+            "point" => {
+                let i = self.light_rgb(ps, "I", loc)?;
+                let from = point(ps, "from", [0.0; 3]);
+                Light::Point(
+                    PointLight::new(&ctm, from, i, scale, Self::positive(ps, "power"))
+                        .map_err(lerr)?,
+                )
+            }
+            "spot" => {
+                let i = self.light_rgb(ps, "I", loc)?;
+                let from = point(ps, "from", [0.0; 3]);
+                let to = point(ps, "to", [0.0, 0.0, 1.0]);
+                let cone = ps.float_or("coneangle", 30.0) as f32;
+                let delta = ps.float_or("conedeltaangle", 5.0) as f32;
+                let power = Self::positive(ps, "power");
+                Light::Spot(
+                    SpotLight::new(&ctm, from, to, i, scale, cone, delta, power).map_err(lerr)?,
+                )
+            }
+            "distant" => {
+                let l = self.light_rgb(ps, "L", loc)?;
+                let from = point(ps, "from", [0.0; 3]);
+                let to = point(ps, "to", [0.0, 0.0, 1.0]);
+                let illum = Self::positive(ps, "illuminance");
+                Light::Distant(DistantLight::new(&ctm, from, to, l, scale, illum).map_err(lerr)?)
+            }
+            "infinite" => self.infinite_light(ps, loc)?,
+            other => {
+                let what = format!("LightSource \"{other}\"");
+                self.unsupported(loc, &what);
+                return Ok(());
+            }
+        };
+        ps.warn_unused(&format!("LightSource \"{ty}\""), &mut self.warnings);
+        self.builder.add_light(light);
+        self.counts.lights += 1;
+        Ok(())
+    }
+
+    /// `AreaLightSource "diffuse" params`: applies to later shapes in the
+    /// same attribute block.
+    pub(super) fn area_light_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
+        if ty != "diffuse" {
+            let what = format!("AreaLightSource \"{ty}\"");
+            self.unsupported(loc, &what);
+            return Ok(());
+        }
+        if ps.find("filename").is_some() {
+            ps.mark_used("filename");
+            self.unsupported(loc, "image area lights (\"filename\"); using L");
+        }
+        let l = self.light_rgb(ps, "L", loc)?;
+        let scale = ps.float_or("scale", 1.0) as f32;
+        if !(l.is_finite() && l.min_component() >= 0.0 && scale.is_finite() && scale >= 0.0) {
+            return Err(ParseError::scene(
+                loc,
+                "area light L and scale must be finite and non-negative",
+            ));
+        }
+        let spec = AreaSpec {
+            l: l * scale,
+            two_sided: ps.bool_or("twosided", false),
+            power: Self::positive(ps, "power"),
+        };
+        ps.warn_unused("AreaLightSource \"diffuse\"", &mut self.warnings);
+        self.state.cur.area = Some(spec);
+        Ok(())
+    }
+}

@@ -1,0 +1,207 @@
+//! Rendering options: `Camera`, `Film`, `Sampler`, `Integrator` and
+//! `PixelFilter`.
+
+use super::sink::PbrtLoader;
+use crate::camera::PerspectiveParams;
+use crate::filter::{Filter, FilterParams};
+use crate::scene::CameraSpec;
+use lowdisc::catalog::SamplerName;
+use pbrt_format::{Loc, ParamSet, ParseError};
+
+fn float4(ps: &ParamSet, name: &str) -> Option<[f32; 4]> {
+    let v = ps.get_floats(name)?;
+    (v.len() == 4).then(|| [v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32])
+}
+
+fn resolution_value(v: i64, name: &str, loc: &Loc) -> Result<u32, ParseError> {
+    u32::try_from(v)
+        .ok()
+        .filter(|&r| (1..=1 << 16).contains(&r))
+        .ok_or_else(|| {
+            ParseError::scene(loc, format!("Film: {name} {v} must be between 1 and 65536"))
+        })
+}
+
+impl PbrtLoader {
+    /// `Camera "perspective"`: the CTM is camera-from-world.
+    pub(super) fn camera_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
+        let camera_from_world = self.state.cur.ctm;
+        let world_from_camera = camera_from_world.inverse();
+        self.state.named.insert("camera".into(), world_from_camera);
+        if ty != "perspective" {
+            self.warn(
+                loc,
+                format!("Camera \"{ty}\" is not supported; using a perspective camera"),
+            );
+        }
+        let d = PerspectiveParams::default();
+        let params = PerspectiveParams {
+            fov: ps.float_or("fov", d.fov as f64) as f32,
+            lens_radius: ps.float_or("lensradius", 0.0) as f32,
+            focal_distance: ps.float_or("focaldistance", d.focal_distance as f64) as f32,
+            frame_aspect_ratio: ps.get_float("frameaspectratio").map(|v| v as f32),
+            screen_window: float4(ps, "screenwindow"),
+        };
+        let open = ps.float_or("shutteropen", 0.0);
+        let close = ps.float_or("shutterclose", 1.0);
+        if !(close > open) {
+            return Err(ParseError::scene(
+                loc,
+                "Camera: shutterclose must exceed shutteropen",
+            ));
+        }
+        self.film.exposure_time = (close - open) as f32;
+        ps.warn_unused(&format!("Camera \"{ty}\""), &mut self.warnings);
+        self.camera = Some(CameraSpec {
+            world_from_camera,
+            params,
+        });
+        Ok(())
+    }
+
+    /// `Film "rgb"`.
+    pub(super) fn film_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
+        if ty != "rgb" {
+            self.warn(
+                loc,
+                format!("Film \"{ty}\" is not supported; using \"rgb\""),
+            );
+        }
+        let [w, h] = self.film.resolution;
+        let w = resolution_value(ps.int_or("xresolution", w as i64), "xresolution", loc)?;
+        let h = resolution_value(ps.int_or("yresolution", h as i64), "yresolution", loc)?;
+        self.film.resolution = [w, h];
+        self.settings.resolution = [w, h];
+        if let Some(f) = ps.get_string("filename") {
+            self.film.filename = f.to_string();
+            self.settings.output = Some(f.to_string());
+        }
+        self.film.iso = ps.float_or("iso", self.film.iso as f64) as f32;
+        self.film.max_component_value = ps.float_or("maxcomponentvalue", f64::INFINITY) as f32;
+        self.film.crop_window = float4(ps, "cropwindow");
+        self.film.pixel_bounds = ps
+            .get_ints("pixelbounds")
+            .filter(|v| v.len() == 4)
+            .map(|v| [v[0] as i32, v[1] as i32, v[2] as i32, v[3] as i32]);
+        if let Some(s) = ps.get_string("sensor")
+            && s != "cie1931"
+        {
+            self.warn(
+                loc,
+                format!("Film sensor \"{s}\" is not supported; using cie1931"),
+            );
+        }
+        for p in ["diagonal", "savefp16", "whitebalance"] {
+            ps.mark_used(p);
+        }
+        ps.warn_unused(&format!("Film \"{ty}\""), &mut self.warnings);
+        Ok(())
+    }
+
+    /// `Sampler`: its type mapped to a lowdisc sampler, and `pixelsamples`.
+    pub(super) fn sampler_directive(&mut self, ty: &str, ps: &ParamSet, loc: &Loc) {
+        let rand = ps.get_string("randomization").map(str::to_string);
+        let spp = if ty == "stratified" {
+            let x = ps.int_or("xsamples", 4);
+            let y = ps.int_or("ysamples", 4);
+            ps.mark_used("jitter");
+            x.saturating_mul(y)
+        } else {
+            ps.int_or("pixelsamples", 16)
+        };
+        let name = match (ty, rand.as_deref()) {
+            ("halton", Some("owen") | Some("fastowen")) => SamplerName::HaltonOwen,
+            ("halton", _) => SamplerName::Halton,
+            ("sobol", Some("none")) => SamplerName::Sobol,
+            ("sobol", Some("permutedigits")) => SamplerName::SobolXor,
+            ("sobol", Some("owen")) => SamplerName::SobolOwen,
+            ("sobol", _) => SamplerName::SobolFastOwen,
+            ("zsobol", _) => SamplerName::ZSobol,
+            ("paddedsobol", _) => SamplerName::PaddedSobol,
+            ("independent", _) => SamplerName::Independent,
+            ("stratified", _) => SamplerName::Stratified,
+            (other, _) => {
+                self.warn(
+                    loc,
+                    format!("Sampler \"{other}\" is not available; using zsobol"),
+                );
+                SamplerName::ZSobol
+            }
+        };
+        if ps.find("seed").is_some() {
+            ps.mark_used("seed");
+            self.warn(
+                loc,
+                "Sampler \"seed\" is ignored; the renderer's --seed applies",
+            );
+        }
+        match u32::try_from(spp).ok().filter(|&n| n > 0) {
+            Some(n) => self.settings.spp = Some(n),
+            None => self.warn(loc, format!("Sampler: invalid sample count {spp}; ignored")),
+        }
+        self.settings.sampler = Some(name);
+        self.settings.sampler_type = Some(ty.to_string());
+        ps.warn_unused(&format!("Sampler \"{ty}\""), &mut self.warnings);
+    }
+
+    /// `Integrator`: the path tracer's maximum depth.
+    pub(super) fn integrator_directive(&mut self, ty: &str, ps: &ParamSet, loc: &Loc) {
+        match ty {
+            "path" => {}
+            "volpath" => self.warn(
+                loc,
+                "Integrator \"volpath\": rendering with the path tracer; media are ignored",
+            ),
+            other => self.warn(
+                loc,
+                format!("Integrator \"{other}\" is not available; rendering with the path tracer"),
+            ),
+        }
+        let depth = ps.int_or("maxdepth", 5);
+        match u32::try_from(depth) {
+            Ok(d) => self.settings.max_depth = Some(d),
+            Err(_) => self.warn(loc, format!("Integrator: maxdepth {depth} < 0; ignored")),
+        }
+        for p in ["regularize", "lightsampler"] {
+            if ps.find(p).is_some() {
+                ps.mark_used(p);
+                let what = format!("Integrator parameter \"{p}\"");
+                self.unsupported(loc, &what);
+            }
+        }
+        self.settings.integrator = Some(ty.to_string());
+        ps.warn_unused(&format!("Integrator \"{ty}\""), &mut self.warnings);
+    }
+
+    /// `PixelFilter`.
+    pub(super) fn filter_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
+        let f = |n: &str| ps.get_float(n).map(|v| v as f32);
+        let p = FilterParams {
+            x_radius: f("xradius"),
+            y_radius: f("yradius"),
+            sigma: f("sigma"),
+            b: f("B"),
+            c: f("C"),
+            tau: f("tau"),
+        };
+        self.filter = Filter::create(ty, &p)
+            .map_err(|e| ParseError::scene(loc, format!("PixelFilter: {e}")))?;
+        ps.warn_unused(&format!("PixelFilter \"{ty}\""), &mut self.warnings);
+        Ok(())
+    }
+}

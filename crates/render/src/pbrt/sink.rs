@@ -1,0 +1,308 @@
+//! [`PbrtLoader`]: the [`CallSink`] that receives every directive and keeps
+//! the loader's state; shapes, materials, lights and rendering options are
+//! handled in sibling modules.
+
+use super::state::{MatRef, StateStack, pbrt_matrix};
+use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
+use crate::camera::PerspectiveParams;
+use crate::film::FilmParams;
+use crate::filter::Filter;
+use crate::math::Transform;
+use crate::render::RenderError;
+use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
+use crate::spectrum::Rgb;
+use pbrt_format::{Call, CallSink, FileKind, Loc, ParamSet, ParseError, TargetResult, Warnings};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+/// A shape recorded inside `ObjectBegin`/`ObjectEnd`, created per instance.
+#[derive(Clone, Debug)]
+pub(super) struct ShapeDef {
+    pub ty: String,
+    pub params: ParamSet,
+    pub ctm: Transform,
+    pub reverse: bool,
+    pub material: MatRef,
+    pub loc: Loc,
+}
+
+/// Builds a scene from pbrt-v4 directives (see [`super::load_pbrt_scene`]).
+#[derive(Debug)]
+pub struct PbrtLoader {
+    pub(super) base_dir: PathBuf,
+    pub(super) options: LoadOptions,
+    pub(super) builder: SceneBuilder,
+    pub(super) warnings: Warnings,
+    pub(super) state: StateStack,
+    pub(super) settings: SceneSettings,
+    pub(super) counts: SceneCounts,
+    pub(super) camera: Option<CameraSpec>,
+    pub(super) film: FilmParams,
+    pub(super) filter: Filter,
+    pub(super) named_materials: HashMap<String, MatRef>,
+    pub(super) default_material: Option<u32>,
+    pub(super) float_textures: HashMap<String, f32>,
+    pub(super) spectrum_textures: HashMap<String, Rgb>,
+    objects: HashMap<String, Vec<ShapeDef>>,
+    current_object: Option<(String, Vec<ShapeDef>)>,
+    imports: Vec<StateStack>,
+}
+
+impl PbrtLoader {
+    /// A loader for the scene file `path` (relative file names in the scene
+    /// are resolved against its directory).
+    pub fn new(path: &Path, options: LoadOptions) -> PbrtLoader {
+        let base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        PbrtLoader {
+            base_dir,
+            options,
+            builder: SceneBuilder::new(),
+            warnings: Warnings::new(),
+            state: StateStack::default(),
+            settings: SceneSettings {
+                resolution: FilmParams::default().resolution,
+                ..SceneSettings::default()
+            },
+            counts: SceneCounts::default(),
+            camera: None,
+            film: FilmParams::default(),
+            filter: Filter::default(),
+            named_materials: HashMap::new(),
+            default_material: None,
+            float_textures: HashMap::new(),
+            spectrum_textures: HashMap::new(),
+            objects: HashMap::new(),
+            current_object: None,
+            imports: Vec::new(),
+        }
+    }
+
+    /// A file name from the scene, resolved against the main file's directory.
+    pub(super) fn resolve(&self, name: &str) -> PathBuf {
+        let p = Path::new(name);
+        if p.is_absolute() {
+            p.to_path_buf()
+        } else {
+            self.base_dir.join(p)
+        }
+    }
+
+    /// Adds a warning at `loc`.
+    pub(super) fn warn(&mut self, loc: &Loc, message: impl Into<String>) {
+        self.warnings.warn(loc, message);
+    }
+
+    /// Warns once per message (for "X is not supported").
+    pub(super) fn unsupported(&mut self, loc: &Loc, what: &str) {
+        self.warnings
+            .warn_once(loc, format!("{what} is not supported; ignored"));
+    }
+
+    /// Builds the scene after the last directive.
+    pub fn finish(mut self) -> Result<LoadedScene, RenderError> {
+        if self.current_object.is_some() {
+            self.warnings
+                .warn_global("ObjectBegin without ObjectEnd at end of file");
+        }
+        let camera = match self.camera.take() {
+            Some(c) => c,
+            None => {
+                self.warnings
+                    .warn_global("the scene has no Camera; using pbrt's default camera");
+                CameraSpec {
+                    world_from_camera: Transform::IDENTITY,
+                    params: PerspectiveParams::default(),
+                }
+            }
+        };
+        if self.counts.lights == 0 && self.counts.area_shapes == 0 {
+            self.warnings
+                .warn_global("the scene has no lights; it will render black");
+        }
+        self.builder.set_camera(camera);
+        self.builder.set_film(FilmSettings {
+            params: self.film.clone(),
+            filter: self.filter.clone(),
+            exposure: 1.0,
+        });
+        let scene = self.builder.build()?;
+        Ok(LoadedScene {
+            scene,
+            warnings: self.warnings.iter().map(ToString::to_string).collect(),
+            settings: self.settings,
+            counts: self.counts,
+        })
+    }
+
+    fn shape_directive(&mut self, ty: String, params: ParamSet, loc: &Loc) -> TargetResult {
+        let def = ShapeDef {
+            ty,
+            params,
+            ctm: self.state.cur.ctm,
+            reverse: self.state.cur.reverse_orientation,
+            material: self.state.cur.material,
+            loc: loc.clone(),
+        };
+        if let Some((_, defs)) = &mut self.current_object {
+            if self.state.cur.area.is_some() {
+                self.warnings
+                    .warn_once(loc, "area lights inside object definitions are ignored");
+            }
+            defs.push(def);
+            return Ok(());
+        }
+        let area = self.state.cur.area.clone();
+        self.create_shape(&def, def.ctm, area.as_ref())
+    }
+
+    fn object_instance(&mut self, name: &str, loc: &Loc) -> TargetResult {
+        if self.current_object.is_some() {
+            return Err(ParseError::scene(loc, "ObjectInstance inside ObjectBegin"));
+        }
+        let defs =
+            self.objects.get(name).cloned().ok_or_else(|| {
+                ParseError::scene(loc, format!("object \"{name}\" is not defined"))
+            })?;
+        let inst = self.state.cur.ctm;
+        for def in &defs {
+            self.create_shape(def, inst * def.ctm, None)?;
+        }
+        self.counts.instances += 1;
+        Ok(())
+    }
+
+    fn attribute_end(&mut self, loc: &Loc) {
+        if !self.state.pop() {
+            self.warn(loc, "unmatched AttributeEnd; ignored");
+        }
+    }
+}
+
+impl CallSink for PbrtLoader {
+    fn call(&mut self, call: Call, loc: &Loc) -> TargetResult {
+        match call {
+            Call::Option(p) => {
+                let what = format!("Option \"{}\"", p.name);
+                self.unsupported(loc, &what);
+            }
+            Call::ColorSpace(name) => {
+                if name != "srgb" {
+                    self.warn(
+                        loc,
+                        format!("ColorSpace \"{name}\": rendering in sRGB primaries"),
+                    );
+                }
+            }
+            Call::Identity => self.state.cur.ctm = Transform::IDENTITY,
+            Call::Translate(d) => self.state.translate(d),
+            Call::Scale(s) => self.state.scale(s, loc)?,
+            Call::Rotate(a, axis) => self.state.rotate(a, axis, loc)?,
+            Call::LookAt(e, l, u) => self.state.look_at(e, l, u, loc)?,
+            Call::ConcatTransform(m) => {
+                let t = pbrt_matrix(m, loc)?;
+                self.state.concat(t);
+            }
+            Call::Transform(m) => self.state.cur.ctm = pbrt_matrix(m, loc)?,
+            Call::CoordinateSystem(name) => {
+                self.state.named.insert(name, self.state.cur.ctm);
+            }
+            Call::CoordSysTransform(name) => match self.state.named.get(&name) {
+                Some(t) => self.state.cur.ctm = *t,
+                None => {
+                    self.warn(
+                        loc,
+                        format!("coordinate system \"{name}\" is not defined; ignored"),
+                    );
+                }
+            },
+            Call::ActiveTransform(_) | Call::TransformTimes(..) => {
+                self.unsupported(loc, "motion blur (ActiveTransform, TransformTimes)")
+            }
+            Call::ReverseOrientation => {
+                self.state.cur.reverse_orientation = !self.state.cur.reverse_orientation
+            }
+            Call::Camera(ty, params) => self.camera_directive(&ty, &params, loc)?,
+            Call::Film(ty, params) => self.film_directive(&ty, &params, loc)?,
+            Call::Sampler(ty, params) => self.sampler_directive(&ty, &params, loc),
+            Call::Integrator(ty, params) => self.integrator_directive(&ty, &params, loc),
+            Call::PixelFilter(ty, params) => self.filter_directive(&ty, &params, loc)?,
+            Call::Accelerator(..) => {
+                self.unsupported(loc, "Accelerator (the renderer always uses its SAH BVH)")
+            }
+            Call::MakeNamedMedium(..) | Call::MediumInterface(..) => {
+                self.unsupported(loc, "participating media")
+            }
+            Call::WorldBegin => {
+                self.state.cur.ctm = Transform::IDENTITY;
+                self.state.named.insert("world".into(), Transform::IDENTITY);
+            }
+            Call::AttributeBegin => self.state.push(false),
+            Call::TransformBegin => self.state.push(true),
+            Call::AttributeEnd | Call::TransformEnd => self.attribute_end(loc),
+            Call::Attribute(target, _) => {
+                let what = format!("Attribute \"{target}\"");
+                self.unsupported(loc, &what);
+            }
+            Call::Shape(ty, params) => self.shape_directive(ty, params, loc)?,
+            Call::Material(ty, params) => {
+                let m = self.create_material(&ty, &params, loc)?;
+                self.state.cur.material = m;
+            }
+            Call::MakeNamedMaterial(name, params) => {
+                params.mark_used("type");
+                let ty = params.get_string("type").unwrap_or("").to_string();
+                let m = self.create_material(&ty, &params, loc)?;
+                if self.named_materials.insert(name.clone(), m).is_some() {
+                    self.warn(loc, format!("named material \"{name}\" redefined"));
+                }
+            }
+            Call::NamedMaterial(name) => {
+                let m = *self.named_materials.get(&name).ok_or_else(|| {
+                    ParseError::scene(loc, format!("named material \"{name}\" is not defined"))
+                })?;
+                self.state.cur.material = m;
+            }
+            Call::Texture(name, ty, class, params) => {
+                self.texture_directive(&name, &ty, &class, &params, loc)?
+            }
+            Call::LightSource(ty, params) => self.light_directive(&ty, &params, loc)?,
+            Call::AreaLightSource(ty, params) => self.area_light_directive(&ty, &params, loc)?,
+            Call::ObjectBegin(name) => {
+                if self.current_object.is_some() {
+                    return Err(ParseError::scene(loc, "ObjectBegin inside ObjectBegin"));
+                }
+                self.state.push(false);
+                self.current_object = Some((name, Vec::new()));
+            }
+            Call::ObjectEnd => match self.current_object.take() {
+                Some((name, defs)) => {
+                    self.objects.insert(name, defs);
+                    self.attribute_end(loc);
+                }
+                None => self.warn(loc, "ObjectEnd without ObjectBegin; ignored"),
+            },
+            Call::ObjectInstance(name) => self.object_instance(&name, loc)?,
+        }
+        Ok(())
+    }
+
+    fn warning(&mut self, loc: &Loc, message: &str) {
+        self.warn(loc, message);
+    }
+
+    fn file_begin(&mut self, _path: &Path, kind: FileKind, _loc: Option<&Loc>) -> TargetResult {
+        if kind == FileKind::Import {
+            self.imports.push(self.state.clone());
+        }
+        Ok(())
+    }
+
+    fn file_end(&mut self, _path: &Path, kind: FileKind) -> TargetResult {
+        if kind == FileKind::Import
+            && let Some(s) = self.imports.pop()
+        {
+            self.state = s;
+        }
+        Ok(())
+    }
+}
