@@ -26,6 +26,7 @@ pub mod integrator;
 pub mod light;
 pub mod math;
 pub mod mesh;
+pub mod pbrt;
 pub mod render;
 pub mod sampling;
 pub mod scene;
