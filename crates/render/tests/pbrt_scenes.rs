@@ -304,3 +304,60 @@ fn plymesh_in_included_file_resolves_against_main_directory() {
     let l = load_pbrt_scene(&p, &LoadOptions::default()).unwrap();
     assert_eq!(l.counts.triangles, 1);
 }
+
+#[test]
+fn nan_radius_is_an_error() {
+    let e = load_text(
+        "nan",
+        &format!("{CAMERA}Shape \"sphere\" \"float radius\" nan\n"),
+    )
+    .unwrap_err();
+    assert!(e.contains("scene.pbrt:5:"), "{e}");
+}
+
+#[test]
+fn interface_mix_and_measured_materials() {
+    let scene = format!(
+        "{CAMERA}LightSource \"point\"\n\
+         MakeNamedMaterial \"a\" \"string type\" \"diffuse\"\n\
+         MakeNamedMaterial \"b\" \"string type\" \"dielectric\" \"spectrum eta\" \"glass-BK7\"\n\
+         MakeNamedMaterial \"m\" \"string type\" \"mix\" \"string materials\" [\"a\" \"b\"] \"float amount\" 0.8\n\
+         NamedMaterial \"m\"\nShape \"sphere\"\n\
+         Material \"measured\" \"string filename\" \"x.bsdf\"\nShape \"sphere\"\n\
+         Material \"interface\"\nShape \"sphere\"\n"
+    );
+    let l = load_text("mats", &scene).unwrap();
+    // The interface sphere is skipped; mix adds no material of its own.
+    assert_eq!((l.counts.spheres, l.counts.materials), (2, 3));
+    let mats = l.scene.materials();
+    assert!(
+        matches!(mats[1], lowdisc_render::bsdf::Material::Dielectric { eta, .. } if (eta - 1.5168).abs() < 1e-4),
+        "{:?}",
+        mats[1]
+    );
+    for what in ["mix material", "measured material", "interface"] {
+        assert!(
+            l.warnings.iter().any(|w| w.contains(what)),
+            "{what}: {:?}",
+            l.warnings
+        );
+    }
+}
+
+#[test]
+fn camera_coordinate_system_is_world_from_camera() {
+    let scene = format!(
+        "{CAMERA}LightSource \"point\"\nAttributeBegin\nCoordSysTransform \"camera\"\nShape \"sphere\" \"float radius\" 0.5\nAttributeEnd\n"
+    );
+    let l = load_text("camsys", &scene).unwrap();
+    let b = l.scene.bounds();
+    let c = [
+        (b.min.x + b.max.x) / 2.0,
+        (b.min.y + b.max.y) / 2.0,
+        (b.min.z + b.max.z) / 2.0,
+    ];
+    assert!(
+        c[0].abs() < 1e-4 && c[1].abs() < 1e-4 && (c[2] + 5.0).abs() < 1e-4,
+        "{c:?}"
+    );
+}
