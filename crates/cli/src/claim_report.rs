@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
-use lowdisc_plot::{LineChart, Series};
+use lowdisc_plot::{Color, LineChart, Series};
 use serde::Serialize;
 
 use crate::claim::{ClaimConfig, ClaimRow, Stat};
@@ -103,6 +103,54 @@ pub fn markdown(config: &ClaimConfig, rows: &[ClaimRow], seconds: f64) -> String
     md
 }
 
+/// Colour and dash of each label's line, in label order: `paper` and
+/// `paper-repro` at the same threshold share a colour (`paper-repro`
+/// dashed), every other sampler has its own palette colour.
+fn series_styles(rows: &[ClaimRow]) -> Vec<(Color, bool)> {
+    let mut thresholds: Vec<u64> = Vec::new();
+    let mut others: Vec<String> = Vec::new();
+    let mut styles = Vec::new();
+    let names = labels(rows);
+    for name in &names {
+        let row = rows
+            .iter()
+            .find(|r| &r.label == name)
+            .expect("a row per label");
+        let style = match row.threshold {
+            Some(t) => {
+                let bits = t.to_bits();
+                let k = thresholds
+                    .iter()
+                    .position(|&b| b == bits)
+                    .unwrap_or_else(|| {
+                        thresholds.push(bits);
+                        thresholds.len() - 1
+                    });
+                (k, row.sampler == "paper-repro")
+            }
+            None => {
+                others.push(name.clone());
+                (usize::MAX - others.len() + 1, false)
+            }
+        };
+        styles.push(style);
+    }
+    // Paper thresholds take the colours after the first other sampler (sobol).
+    let paper_colours = thresholds.len();
+    styles
+        .into_iter()
+        .map(|(k, dashed)| {
+            let index = if k > usize::MAX / 2 {
+                let other = usize::MAX - k;
+                if other == 0 { 0 } else { other + paper_colours }
+            } else {
+                1 + k
+            };
+            (Color::palette(index), dashed)
+        })
+        .collect()
+}
+
 /// A log-log chart of one quantity against N for one pair.
 fn chart(
     config: &ClaimConfig,
@@ -121,13 +169,17 @@ fn chart(
         },
     );
     chart.size = [960, 640];
-    for name in labels(rows) {
+    let styles = series_styles(rows);
+    for (name, (color, dashed)) in labels(rows).into_iter().zip(styles) {
         let points: Vec<[f64; 2]> = rows
             .iter()
             .filter(|r| r.label == name && r.dims[0] == pair_start)
             .map(|r| [f64::from(r.n), get(r).mean])
             .collect();
-        chart = chart.with(Series::new(name, points));
+        let mut series = Series::new(name, points);
+        series.color = Some(color);
+        series.dashed = dashed;
+        chart = chart.with(series);
     }
     let (lo, hi) = (
         f64::from(*config.ns.iter().min().unwrap_or(&1)),
