@@ -200,12 +200,7 @@ impl SamplerConfig {
     /// Checks the fields every sampler needs: `spp >= 1`, a threshold in
     /// `[0, 1]` (NaN rejected), sides in `1..=MAX_RESOLUTION`.
     pub fn validate(&self) -> Result<(), Error> {
-        if self.spp == 0 {
-            return Err(Error::InvalidSampleCount {
-                count: 0,
-                reason: "at least one sample per pixel is needed",
-            });
-        }
+        crate::pixel::check_spp(self.spp)?;
         check_threshold(self.threshold)?;
         let [w, h] = self.resolution;
         if w == 0 || h == 0 || w > MAX_RESOLUTION || h > MAX_RESOLUTION {

@@ -140,20 +140,8 @@ impl GlobalSobolSampler {
         mode: GlobalSobolMode,
         seed: u64,
     ) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::InvalidSampleCount {
-                count: 0,
-                reason: "at least one sample per pixel is needed",
-            });
-        }
-        let [w, h] = resolution;
-        if w == 0 || h == 0 {
-            return Err(Error::InvalidResolution {
-                width: w,
-                height: h,
-                reason: "both sides must be at least 1",
-            });
-        }
+        super::check_spp(spp)?;
+        let [w, h] = super::check_resolution(resolution)?;
         let log2_res = super::ceil_log2(u64::from(w.max(h)));
         if log2_res > 16 {
             return Err(Error::InvalidResolution {

@@ -59,20 +59,8 @@ impl HaltonSampler {
         randomize: HaltonRandomize,
         seed: u64,
     ) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::InvalidSampleCount {
-                count: 0,
-                reason: "at least one sample per pixel is needed",
-            });
-        }
-        let [width, height] = resolution;
-        if width == 0 || height == 0 {
-            return Err(Error::InvalidResolution {
-                width,
-                height,
-                reason: "width and height must be at least 1",
-            });
-        }
+        super::check_spp(spp)?;
+        let [width, height] = super::check_resolution(resolution)?;
         let (s0, e0) = smallest_power_at_least(2, width.min(MAX_RESOLUTION));
         let (s1, e1) = smallest_power_at_least(3, height.min(MAX_RESOLUTION));
         // Checked, though it cannot fail with the bounds above.

@@ -34,12 +34,7 @@ impl IndependentSampler {
     /// # Errors
     /// [`Error::InvalidSampleCount`] if `spp == 0`.
     pub fn new(spp: u32, seed: u64) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::InvalidSampleCount {
-                count: 0,
-                reason: "at least one sample per pixel is needed",
-            });
-        }
+        super::check_spp(spp)?;
         let sequence = Independent::new(seed);
         Ok(IndependentSampler {
             spp,

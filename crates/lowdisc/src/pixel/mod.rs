@@ -65,6 +65,30 @@ pub(crate) fn reseed(randomize: Randomize, seed: u64) -> Randomize {
     }
 }
 
+/// Checks that a sampler gets at least one sample per pixel.
+pub(crate) fn check_spp(spp: u32) -> Result<(), crate::Error> {
+    if spp == 0 {
+        return Err(crate::Error::InvalidSampleCount {
+            count: 0,
+            reason: "at least one sample per pixel is needed",
+        });
+    }
+    Ok(())
+}
+
+/// Checks that both sides of an image are at least 1 and returns them.
+pub(crate) fn check_resolution(resolution: [u32; 2]) -> Result<[u32; 2], crate::Error> {
+    let [width, height] = resolution;
+    if width == 0 || height == 0 {
+        return Err(crate::Error::InvalidResolution {
+            width,
+            height,
+            reason: "both sides must be at least 1",
+        });
+    }
+    Ok(resolution)
+}
+
 /// The smallest `k` with `2^k >= n` (`n >= 1`).
 pub(crate) fn ceil_log2(n: u64) -> u32 {
     if n <= 1 {

@@ -72,12 +72,7 @@ impl PaddedSobolSampler {
     /// A sampler with `spp` samples per pixel (any `spp >= 1`). The seed
     /// inside `randomize` is combined with `seed`.
     pub fn new(spp: u32, randomize: Randomize, seed: u64) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::InvalidSampleCount {
-                count: 0,
-                reason: "at least one sample per pixel is needed",
-            });
-        }
+        super::check_spp(spp)?;
         Ok(PaddedSobolSampler {
             spp,
             randomize,
