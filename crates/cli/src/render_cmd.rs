@@ -1,12 +1,13 @@
-//! `lowdisc render`: path-trace a scene (for now the built-in Cornell box)
-//! with any of lowdisc's samplers and write EXR or PNG.
+//! `lowdisc render`: path-trace a pbrt-v4 scene file or the built-in Cornell
+//! box with any of lowdisc's samplers and write EXR or PNG.
 //!
 //! Arguments become a validated [`RenderConfig`] before any work starts; the
 //! render itself runs in the `lowdisc-render` library, which reports progress
 //! through a callback that drives an `indicatif` bar here (only when stderr is
-//! a terminal, and never with `--quiet`). Warnings go to stderr as
-//! `warning: ...` lines (also suppressed by `--quiet`); `--stats` prints the
-//! counters and the time per phase to stdout.
+//! a terminal, and never with `--quiet`). Warnings go to stderr, each distinct
+//! one once (also suppressed by `--quiet`); `--stats` prints the counters and
+//! the time per phase to stdout. A scene file's own settings (sampler, spp,
+//! maxdepth, resolution, output file) apply unless a flag overrides them.
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -18,8 +19,10 @@ use indicatif::{ProgressBar, ProgressStyle};
 use lowdisc::catalog::SamplerName;
 use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
+use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{MAX_SPP, MAX_THREADS, Progress, RenderOptions, render};
-use lowdisc_render::scene::{Scene, load_scene_file};
+use lowdisc_render::scene::Scene;
+use std::collections::HashSet;
 
 use crate::parse;
 
@@ -33,8 +36,11 @@ pub const LONG_ABOUT: &str = "\
 Path-trace a scene and write the image.\n\
 \n\
 Without SCENE the built-in Cornell box is rendered (the published Cornell\n\
-Box Data geometry, RGB reflectances, 35 mm camera). Loading pbrt-v4 scene\n\
-files is not implemented yet.\n\
+Box Data geometry, RGB reflectances, 35 mm camera). A pbrt-v4 scene file's\n\
+Sampler, pixelsamples, maxdepth, Film resolution and filename are used\n\
+unless --sampler, --spp, --maxdepth, --res or -o is given; --envmap replaces\n\
+the image of every image-based infinite light. Unsupported directives and\n\
+parameters are warnings with file:line:column; syntax errors are errors.\n\
 \n\
 The renderer is a unidirectional path tracer with next-event estimation and\n\
 MIS, in RGB. Every random decision comes from the chosen pixel sampler, in a\n\
@@ -53,30 +59,31 @@ pub struct RenderArgs {
     scene: Option<PathBuf>,
     /// Pixel sampler: independent, stratified, halton, halton-owen, sobol,
     /// sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro,
-    /// padded-sobol, zsobol.
-    #[arg(long, short = 's', value_name = "NAME", default_value = "zsobol")]
-    sampler: String,
-    /// Samples per pixel.
-    #[arg(long, value_name = "N", default_value_t = 16)]
-    spp: u32,
+    /// padded-sobol, zsobol [default: the scene's, else zsobol].
+    #[arg(long, short = 's', value_name = "NAME")]
+    sampler: Option<String>,
+    /// Samples per pixel [default: the scene's, else 16].
+    #[arg(long, value_name = "N")]
+    spp: Option<u32>,
     /// Seed of every random choice.
     #[arg(long, value_name = "S", default_value_t = 0)]
     seed: u64,
-    /// Image resolution [default: 512x512 for the Cornell box].
+    /// Image resolution [default: the scene's; 512x512 for the Cornell box].
     #[arg(long, value_name = "WxH", allow_hyphen_values = true)]
     res: Option<String>,
-    /// Maximum number of bounces (pbrt's maxdepth).
-    #[arg(long, value_name = "D", default_value_t = 5)]
-    maxdepth: u32,
+    /// Maximum number of bounces (pbrt's maxdepth) [default: the scene's, else 5].
+    #[arg(long, value_name = "D")]
+    maxdepth: Option<u32>,
     /// Worker threads [default: all cores].
     #[arg(long, value_name = "T")]
     threads: Option<usize>,
     /// Environment map replacing a scene's missing one (scene files only).
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
-    /// Output image: .exr, .png, .pfm or .hdr.
-    #[arg(long, short = 'o', value_name = "OUT", default_value = "render.exr")]
-    output: PathBuf,
+    /// Output image: .exr, .png, .pfm or .hdr [default: the scene's Film
+    /// filename, else render.exr].
+    #[arg(long, short = 'o', value_name = "OUT")]
+    output: Option<PathBuf>,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -92,10 +99,20 @@ pub struct RenderConfig {
     pub scene: Option<PathBuf>,
     /// Resolution override.
     pub resolution: Option<[u32; 2]>,
-    /// Render options.
-    pub options: RenderOptions,
-    /// Output file.
-    pub output: PathBuf,
+    /// Sampler override.
+    pub sampler: Option<SamplerName>,
+    /// Samples-per-pixel override.
+    pub spp: Option<u32>,
+    /// Maximum-depth override.
+    pub max_depth: Option<u32>,
+    /// Seed of every random choice.
+    pub seed: u64,
+    /// Worker threads (`None`: all cores).
+    pub threads: Option<usize>,
+    /// Environment map replacing the scene's.
+    pub envmap: Option<PathBuf>,
+    /// Output file override.
+    pub output: Option<PathBuf>,
     /// Print statistics.
     pub stats: bool,
     /// Suppress progress and warnings.
@@ -105,15 +122,20 @@ pub struct RenderConfig {
 impl RenderArgs {
     /// Checks every argument and builds the configuration.
     pub fn into_config(self) -> Result<RenderConfig> {
-        let sampler: SamplerName = parse::sampler_name(&self.sampler)?;
-        if self.spp == 0 || self.spp > MAX_SPP {
-            bail!("--spp must be between 1 and {MAX_SPP}, got {}", self.spp);
+        let sampler = self
+            .sampler
+            .as_deref()
+            .map(parse::sampler_name)
+            .transpose()?;
+        if let Some(spp) = self.spp {
+            if spp == 0 || spp > MAX_SPP {
+                bail!("--spp must be between 1 and {MAX_SPP}, got {spp}");
+            }
         }
-        if self.maxdepth > MAX_DEPTH_LIMIT {
-            bail!(
-                "--maxdepth must be at most {MAX_DEPTH_LIMIT}, got {}",
-                self.maxdepth
-            );
+        if let Some(d) = self.maxdepth {
+            if d > MAX_DEPTH_LIMIT {
+                bail!("--maxdepth must be at most {MAX_DEPTH_LIMIT}, got {d}");
+            }
         }
         if let Some(t) = self.threads {
             if t == 0 || t > MAX_THREADS {
@@ -124,21 +146,28 @@ impl RenderArgs {
         if self.envmap.is_some() && self.scene.is_none() {
             bail!("--envmap applies to scene files; the built-in Cornell box has no environment");
         }
-        check_output(&self.output)?;
+        if let Some(out) = &self.output {
+            check_output(out)?;
+        }
+        if let Some(scene) = &self.scene {
+            if !scene.is_file() {
+                bail!("scene file `{}` does not exist", scene.display());
+            }
+        }
+        if let Some(env) = &self.envmap {
+            if !env.is_file() {
+                bail!("--envmap file `{}` does not exist", env.display());
+            }
+        }
         Ok(RenderConfig {
             scene: self.scene,
             resolution,
-            options: RenderOptions {
-                sampler,
-                seed: self.seed,
-                spp: self.spp,
-                integrator: PathIntegrator {
-                    max_depth: self.maxdepth,
-                    ..PathIntegrator::default()
-                },
-                threads: self.threads,
-                tile_size: 16,
-            },
+            sampler,
+            spp: self.spp,
+            max_depth: self.maxdepth,
+            seed: self.seed,
+            threads: self.threads,
+            envmap: self.envmap,
             output: self.output,
             stats: self.stats,
             quiet: self.quiet,
@@ -186,22 +215,90 @@ struct Phases {
     write: Duration,
 }
 
+/// Prints each distinct warning once to stderr (nothing with `--quiet`).
+fn warn_once(seen: &mut HashSet<String>, quiet: bool, warning: &str) {
+    if !quiet && seen.insert(warning.to_string()) {
+        if warning.contains("warning:") {
+            eprintln!("{warning}");
+        } else {
+            eprintln!("warning: {warning}");
+        }
+    }
+}
+
+/// The scene, its render options and the output file, after applying the
+/// scene file's settings and then the command line's overrides.
+fn prepare(
+    config: &RenderConfig,
+    seen: &mut HashSet<String>,
+) -> Result<(Scene, RenderOptions, PathBuf)> {
+    let mut sampler = SamplerName::ZSobol;
+    let mut spp = 16;
+    let mut max_depth = 5;
+    let mut output = PathBuf::from("render.exr");
+    let scene = match &config.scene {
+        None => cornell_box(config.resolution.unwrap_or([512, 512]))?,
+        Some(path) => {
+            let options = LoadOptions {
+                envmap_override: config.envmap.clone(),
+            };
+            let loaded = load_pbrt_scene(path, &options)
+                .with_context(|| format!("cannot load scene `{}`", path.display()))?;
+            for w in &loaded.warnings {
+                warn_once(seen, config.quiet, w);
+            }
+            let s = &loaded.settings;
+            sampler = s.sampler.unwrap_or(sampler);
+            spp = s.spp.unwrap_or(spp).clamp(1, MAX_SPP);
+            max_depth = s.max_depth.unwrap_or(max_depth).min(MAX_DEPTH_LIMIT);
+            if let Some(name) = &s.output {
+                output = scene_output(name);
+            }
+            loaded.scene
+        }
+    };
+    let mut scene = scene;
+    if let Some(r) = config.resolution {
+        scene.set_resolution(r)?;
+    }
+    let options = RenderOptions {
+        sampler: config.sampler.unwrap_or(sampler),
+        seed: config.seed,
+        spp: config.spp.unwrap_or(spp),
+        integrator: PathIntegrator {
+            max_depth: config.max_depth.unwrap_or(max_depth),
+            ..PathIntegrator::default()
+        },
+        threads: config.threads,
+        tile_size: 16,
+    };
+    let output = config.output.clone().unwrap_or(output);
+    check_output(&output)?;
+    Ok((scene, options, output))
+}
+
+/// The output a scene's `Film` filename asks for, in the current directory;
+/// an extension this command cannot write becomes `.exr`.
+fn scene_output(name: &str) -> PathBuf {
+    let file = Path::new(name)
+        .file_name()
+        .map_or_else(|| PathBuf::from("render.exr"), PathBuf::from);
+    let ext = file
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if matches!(ext.as_deref(), Some("exr" | "png" | "pfm" | "hdr")) {
+        file
+    } else {
+        file.with_extension("exr")
+    }
+}
+
 /// Loads (or builds) the scene, renders it and writes the image.
 pub fn run(config: &RenderConfig) -> Result<()> {
     let t0 = Instant::now();
-    let mut scene: Scene = match &config.scene {
-        None => cornell_box(config.resolution.unwrap_or([512, 512]))?,
-        Some(path) => {
-            let mut s = load_scene_file(path)?;
-            if let Some(r) = config.resolution {
-                s.set_resolution(r)?;
-            }
-            s
-        }
-    };
-    if let (None, Some(r)) = (&config.scene, config.resolution) {
-        scene.set_resolution(r)?;
-    }
+    let mut seen = HashSet::new();
+    let (scene, options, output) = prepare(config, &mut seen)?;
     let mut phases = Phases {
         load: t0.elapsed(),
         ..Phases::default()
@@ -219,20 +316,18 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         }
     };
     let t1 = Instant::now();
-    let out = render(&scene, &config.options, &on_progress)?;
+    let out = render(&scene, &options, &on_progress)?;
     phases.render = t1.elapsed();
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    if !config.quiet {
-        for w in &out.warnings {
-            eprintln!("warning: {w}");
-        }
+    for w in &out.warnings {
+        warn_once(&mut seen, config.quiet, w);
     }
     let t2 = Instant::now();
     out.film
-        .write(&config.output, scene.film().exposure)
-        .with_context(|| format!("cannot write `{}`", config.output.display()))?;
+        .write(&output, scene.film().exposure)
+        .with_context(|| format!("cannot write `{}`", output.display()))?;
     phases.write = t2.elapsed();
     if config.stats {
         print_stats(&scene, &out, &phases);

@@ -1,5 +1,6 @@
-//! `lowdisc render` end to end: the built-in Cornell box renders to PNG and
-//! EXR; bad input exits non-zero with one `error:` line and no panic.
+//! `lowdisc render` end to end: the built-in Cornell box and the shared
+//! pbrt-v4 Cornell box file render to PNG and EXR; bad input (including bad
+//! scene files) exits non-zero with one `error:` line and no panic.
 
 mod common;
 
@@ -89,13 +90,71 @@ fn bad_input_is_a_clean_error() {
         &["-o", dir.join("missing/x.png").to_str().unwrap()],
         "does not exist",
     );
-    fails(
-        &["scene.pbrt", "-o", o],
-        "scene loading is not implemented yet",
-    );
+    fails(&["scene.pbrt", "-o", o], "scene.pbrt");
     fails(&["--envmap", "sky.exr", "-o", o], "--envmap");
     assert!(
         std::fs::read_dir(&dir).unwrap().next().is_none(),
         "no output left behind"
     );
+}
+
+/// The shared scene directory, or `None` (with a printed message) when absent.
+fn shared_scenes() -> Option<std::path::PathBuf> {
+    let dir = std::path::PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/scenes"
+    ));
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("skipped: {} is absent", dir.display());
+        None
+    }
+}
+
+#[test]
+fn renders_the_shared_cornell_box_scene_file() {
+    let Some(scenes) = shared_scenes() else {
+        return;
+    };
+    let scene = scenes.join("bitterli-cornell-box/scene-v4.pbrt");
+    let dir = temp_dir("render-scene");
+    let png = dir.join("cbox.png");
+    let out = lowdisc(&[
+        "render",
+        scene.to_str().unwrap(),
+        "--res",
+        "32x32",
+        "--spp",
+        "1",
+        "--stats",
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    // 32x32 pixels at 1 spp: 1024 samples.
+    assert!(stdout.contains("samples           1024"), "{stdout}");
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+}
+
+#[test]
+fn bad_scene_files_are_clean_errors_naming_the_place() {
+    let dir = temp_dir("render-bad-scene");
+    let o = dir.join("x.png");
+    let o = o.to_str().unwrap();
+    let bad = dir.join("syntax.pbrt");
+    std::fs::write(&bad, "WorldBegin\nShape \"sphere\" \"float radius\" [ 1\n").unwrap();
+    fails(&[bad.to_str().unwrap(), "-o", o], "syntax.pbrt:2:");
+    let ply = dir.join("ply.pbrt");
+    std::fs::write(
+        &ply,
+        "WorldBegin\nShape \"plymesh\" \"string filename\" \"missing-mesh.ply\"\n",
+    )
+    .unwrap();
+    fails(&[ply.to_str().unwrap(), "-o", o], "missing-mesh.ply");
+    fails(&[ply.to_str().unwrap(), "-o", o], "ply.pbrt:2:");
+    assert!(!dir.join("x.png").exists(), "no output left behind");
 }

@@ -10,7 +10,7 @@
 //! mesh, as in pbrt) becomes one [`DiffuseAreaLight`] in [`Scene::lights`];
 //! lights at infinity are preprocessed with the scene bounds.
 //!
-//! [`load_scene_file`] is the hook the command line calls for a scene path.
+//! [`load_scene_file`] loads a pbrt-v4 file (through [`crate::pbrt`]) into a scene.
 
 use crate::accel::{Accel, Hit};
 use crate::bsdf::Material;
@@ -304,12 +304,9 @@ impl Scene {
     }
 }
 
-/// Loads a scene file. The pbrt-v4 loader is not part of the crate yet, so
-/// this returns [`RenderError::NotImplemented`]; it is the single place the
-/// command line goes through, to be pointed at the loader when it lands.
+/// Loads a pbrt-v4 scene file with default [`crate::pbrt::LoadOptions`],
+/// dropping its warnings and settings (use [`crate::pbrt::load_pbrt_scene`]
+/// to get them).
 pub fn load_scene_file(path: &Path) -> Result<Scene, RenderError> {
-    let _ = path;
-    Err(RenderError::NotImplemented(
-        "scene loading is not implemented yet".into(),
-    ))
+    crate::pbrt::load_pbrt_scene(path, &crate::pbrt::LoadOptions::default()).map(|l| l.scene)
 }
