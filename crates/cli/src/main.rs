@@ -14,6 +14,7 @@ mod claim;
 mod claim_report;
 mod compose;
 mod discrepancy;
+mod experiment;
 mod figure;
 mod metric_rows;
 mod output;
@@ -58,6 +59,9 @@ enum Command {
     /// Path-trace a scene (default: the built-in Cornell box) to EXR or PNG.
     #[command(long_about = render_cmd::LONG_ABOUT)]
     Render(render_cmd::RenderArgs),
+    /// The paper's experiment: every sampler against a converged reference, with a report.
+    #[command(long_about = experiment::LONG_ABOUT)]
+    Experiment(experiment::ExperimentArgs),
 }
 
 /// Validates the subcommand's arguments and runs it.
@@ -69,6 +73,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         }
         Command::Figure(args) => figure::run(&args.into_config()?),
         Command::Render(args) => render_cmd::run(&args.into_config()?),
+        Command::Experiment(args) => experiment::run(&args.into_config()?),
         Command::Discrepancy(args) => {
             let config = args.into_config()?;
             discrepancy::run(&config, io::stdout().lock())

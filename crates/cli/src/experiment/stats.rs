@@ -1,0 +1,112 @@
+//! Aggregation of repeated measurements: mean and sample standard
+//! deviation, error ratios to the baseline sampler, log-log slope fits, and
+//! the stable content hash that keys the reference cache.
+
+use serde::Serialize;
+
+/// Mean and sample standard deviation (divisor `n - 1`; 0 for one value).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MeanSd {
+    /// Arithmetic mean.
+    pub mean: f64,
+    /// Sample standard deviation.
+    pub sd: f64,
+}
+
+impl MeanSd {
+    /// The mean and sd of `values` (NaN mean for no values).
+    pub fn of(values: &[f64]) -> MeanSd {
+        let n = values.len() as f64;
+        if values.is_empty() {
+            return MeanSd {
+                mean: f64::NAN,
+                sd: f64::NAN,
+            };
+        }
+        let mean = values.iter().sum::<f64>() / n;
+        let sd = if values.len() < 2 {
+            0.0
+        } else {
+            (values.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / (n - 1.0)).sqrt()
+        };
+        MeanSd { mean, sd }
+    }
+}
+
+/// `value / baseline`, or `None` when the baseline is absent or not positive.
+pub fn ratio(value: f64, baseline: Option<f64>) -> Option<f64> {
+    baseline.filter(|b| *b > 0.0).map(|b| value / b)
+}
+
+/// Least-squares slope of `log2 y` against `log2 x` over the points with
+/// both coordinates positive; `None` with fewer than two such points.
+pub fn log_log_slope(points: &[[f64; 2]]) -> Option<f64> {
+    let pts: Vec<[f64; 2]> = points
+        .iter()
+        .filter(|p| p[0] > 0.0 && p[1] > 0.0 && p[1].is_finite())
+        .map(|p| [p[0].log2(), p[1].log2()])
+        .collect();
+    if pts.len() < 2 {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p[0]).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p[1]).sum::<f64>() / n;
+    let sxy: f64 = pts.iter().map(|p| (p[0] - mx) * (p[1] - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p[0] - mx) * (p[0] - mx)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// 64-bit FNV-1a hash of `bytes` continuing from `state` (start with
+/// [`FNV_OFFSET`]); stable across platforms and compiler versions.
+pub fn fnv1a(state: u64, bytes: &[u8]) -> u64 {
+    bytes.iter().fold(state, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// The FNV-1a 64-bit offset basis.
+pub const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mean_and_sample_sd_of_hand_numbers() {
+        // 2, 4, 4, 4, 5, 5, 7, 9: mean 5, sum of squares 32, sd sqrt(32/7).
+        let m = MeanSd::of(&[2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0]);
+        assert_eq!(m.mean, 5.0);
+        assert!((m.sd - (32.0f64 / 7.0).sqrt()).abs() < 1e-15);
+        assert_eq!(MeanSd::of(&[3.5]), MeanSd { mean: 3.5, sd: 0.0 });
+        assert!(MeanSd::of(&[]).mean.is_nan());
+    }
+
+    #[test]
+    fn ratio_to_the_baseline() {
+        assert_eq!(ratio(0.919, Some(1.0)), Some(0.919));
+        assert_eq!(ratio(3.0, Some(4.0)), Some(0.75));
+        assert_eq!(ratio(3.0, Some(0.0)), None);
+        assert_eq!(ratio(3.0, None), None);
+    }
+
+    #[test]
+    fn slope_of_an_exact_power_law() {
+        let pts: Vec<[f64; 2]> = (0..6)
+            .map(|k| {
+                let x = f64::from(1u32 << k);
+                [x, 3.0 * x.powf(-1.5)]
+            })
+            .collect();
+        assert!((log_log_slope(&pts).unwrap() + 1.5).abs() < 1e-12);
+        assert_eq!(log_log_slope(&pts[..1]), None);
+        assert_eq!(log_log_slope(&[[1.0, 1.0], [1.0, 2.0]]), None);
+    }
+
+    #[test]
+    fn fnv_known_values() {
+        // Published FNV-1a 64 test vectors: "" and "a".
+        assert_eq!(fnv1a(FNV_OFFSET, b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(fnv1a(FNV_OFFSET, b"a"), 0xaf63_dc4c_8601_ec8c);
+    }
+}

@@ -1,0 +1,144 @@
+//! End-to-end tests of `lowdisc experiment` on tiny settings: the report
+//! folder is complete, `results.json` has the documented schema, and the
+//! reference cache is reused by a second run.
+
+mod common;
+
+use std::path::Path;
+
+use common::{lowdisc, temp_dir};
+
+fn run_quick(out: &Path) -> String {
+    let o = lowdisc(&[
+        "experiment",
+        "--quick",
+        "--res",
+        "32x24",
+        "--samplers",
+        "sobol,paper-repro,independent",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(o.status.success(), "experiment failed: {stderr}");
+    stderr
+}
+
+#[test]
+fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
+    let dir = temp_dir("experiment");
+    let out = dir.join("out");
+    let log1 = run_quick(&out);
+    assert!(log1.contains("rendering reference"), "{log1}");
+    for f in [
+        "report.md",
+        "report.html",
+        "results.json",
+        "reference.png",
+        "reference_crop.png",
+        "convergence.png",
+        "threshold_sweep.png",
+        "figure.png",
+    ] {
+        assert!(out.join(f).is_file(), "missing {f}");
+    }
+    for s in ["sobol", "paper-repro", "independent"] {
+        for suffix in ["", "_crop", "_relse"] {
+            let f = out.join(format!("{s}{suffix}.png"));
+            assert!(f.is_file(), "missing {}", f.display());
+        }
+    }
+    let md = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(md.contains("| paper-repro"), "{md}");
+    assert!(md.contains("relMSE / sobol"), "{md}");
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.contains("<img src=\"convergence.png\""), "{html}");
+    assert!(html.contains("<table>"));
+
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    assert_eq!(json["settings"]["width"], 32);
+    assert_eq!(json["settings"]["height"], 24);
+    assert_eq!(json["settings"]["spp"], 4);
+    assert!(json["command"].as_array().unwrap().len() > 2);
+    assert!(json["version"].is_string());
+    assert!(json["machine"]["cores"].as_u64().unwrap() >= 1);
+    let samplers = json["samplers"].as_array().unwrap();
+    assert_eq!(samplers.len(), 3);
+    for s in samplers {
+        for key in ["time_s", "mse", "relmse", "rmse", "mae"] {
+            assert!(
+                s[key]["mean"].as_f64().unwrap() >= 0.0,
+                "{key} of {}",
+                s["name"]
+            );
+            assert!(
+                s[key]["sd"].as_f64().unwrap() >= 0.0,
+                "{key} of {}",
+                s["name"]
+            );
+        }
+        assert_eq!(s["runs"].as_array().unwrap().len(), 2);
+        // The mean in the summary is the mean of the runs.
+        let runs: Vec<f64> = s["runs"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["linear"]["relmse"].as_f64().unwrap())
+            .collect();
+        let mean = (runs[0] + runs[1]) / 2.0;
+        assert!((s["relmse"]["mean"].as_f64().unwrap() - mean).abs() <= 1e-12 * mean.abs());
+        // RMSE is the square root of MSE in every run.
+        for r in s["runs"].as_array().unwrap() {
+            let mse = r["linear"]["mse"].as_f64().unwrap();
+            let rmse = r["linear"]["rmse"].as_f64().unwrap();
+            assert!((rmse - mse.sqrt()).abs() <= 1e-9 * rmse.max(1e-300));
+        }
+        assert_eq!(s["convergence"].as_array().unwrap().len(), 4); // 1, 2, 4, 8 spp
+    }
+    let sobol = &samplers[0];
+    assert_eq!(sobol["name"], "sobol");
+    assert_eq!(sobol["relmse_ratio_to_sobol"], 1.0);
+    let indep = &samplers[2];
+    let expected =
+        indep["relmse"]["mean"].as_f64().unwrap() / sobol["relmse"]["mean"].as_f64().unwrap();
+    assert!((indep["relmse_ratio_to_sobol"].as_f64().unwrap() - expected).abs() < 1e-12 * expected);
+    assert_eq!(json["threshold_sweep"].as_array().unwrap().len(), 6);
+    assert_eq!(json["reference"]["cached"], false);
+
+    // Second run: the cached reference is reused, its file untouched.
+    let cache = Path::new(json["reference"]["file"].as_str().unwrap()).to_path_buf();
+    let mtime = std::fs::metadata(&cache).unwrap().modified().unwrap();
+    let log2 = run_quick(&out);
+    assert!(log2.contains("reusing cached reference"), "{log2}");
+    assert!(!log2.contains("rendering reference"), "{log2}");
+    assert_eq!(
+        std::fs::metadata(&cache).unwrap().modified().unwrap(),
+        mtime
+    );
+    let json2: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    assert_eq!(json2["reference"]["cached"], true);
+    // Same seeds, same reference: the same errors.
+    assert_eq!(
+        json2["samplers"][1]["relmse"],
+        json["samplers"][1]["relmse"]
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_arguments_fail_with_one_line() {
+    for args in [
+        vec!["experiment", "--samplers", "sobel"],
+        vec!["experiment", "--runs", "0"],
+        vec!["experiment", "--conv-max", "12"],
+        vec!["experiment", "/nonexistent/scene.pbrt"],
+    ] {
+        let o = lowdisc(&args);
+        assert!(!o.status.success(), "{args:?} succeeded");
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert!(stderr.starts_with("error:"), "{stderr}");
+        assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    }
+}
