@@ -16,7 +16,7 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use lowdisc::catalog::SamplerName;
+use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
@@ -84,6 +84,13 @@ pub struct RenderArgs {
     /// filename, else render.exr].
     #[arg(long, short = 'o', value_name = "OUT")]
     output: Option<PathBuf>,
+    /// Paper permutation threshold in [0,1] (samplers paper and paper-repro):
+    /// the probability that a generator-matrix column is left unflipped.
+    #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
+    threshold: f64,
+    /// Let the paper permutation act on the film dimensions 0-1 too.
+    #[arg(long)]
+    paper_all_dims: bool,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -113,6 +120,10 @@ pub struct RenderConfig {
     pub envmap: Option<PathBuf>,
     /// Output file override.
     pub output: Option<PathBuf>,
+    /// Paper permutation threshold.
+    pub threshold: f64,
+    /// Paper permutation on the film dimensions too.
+    pub paper_all_dims: bool,
     /// Print statistics.
     pub stats: bool,
     /// Suppress progress and warnings.
@@ -169,6 +180,8 @@ impl RenderArgs {
             threads: self.threads,
             envmap: self.envmap,
             output: self.output,
+            threshold: parse::threshold(self.threshold)?,
+            paper_all_dims: self.paper_all_dims,
             stats: self.stats,
             quiet: self.quiet,
         })
@@ -271,6 +284,8 @@ fn prepare(
         },
         threads: config.threads,
         tile_size: 16,
+        threshold: config.threshold,
+        paper_all_dims: config.paper_all_dims,
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;

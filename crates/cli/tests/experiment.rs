@@ -103,7 +103,18 @@ fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
     let expected =
         indep["relmse"]["mean"].as_f64().unwrap() / sobol["relmse"]["mean"].as_f64().unwrap();
     assert!((indep["relmse_ratio_to_sobol"].as_f64().unwrap() - expected).abs() < 1e-12 * expected);
-    assert_eq!(json["threshold_sweep"].as_array().unwrap().len(), 6);
+    let sweep = json["threshold_sweep"].as_array().unwrap();
+    assert_eq!(sweep.len(), 7);
+    for p in sweep {
+        assert!(p["relmse"]["mean"].as_f64().unwrap() > 0.0, "{p}");
+        assert!(p["srgb8_relmse"]["mean"].as_f64().unwrap() > 0.0, "{p}");
+        let d = p["star_discrepancy"].as_f64().unwrap();
+        assert!(d > 0.0 && d <= 1.0, "{p}");
+    }
+    // Threshold 1 flips no column: its renders are plain Sobol's, the same
+    // images as the `sobol` runs with the same seeds.
+    assert_eq!(sweep[6]["threshold"], 1.0);
+    assert_eq!(sweep[6]["relmse"], sobol["relmse"]);
     assert_eq!(json["reference"]["cached"], false);
 
     // Second run: the cached reference is reused, its file untouched.

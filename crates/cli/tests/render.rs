@@ -85,6 +85,8 @@ fn bad_input_is_a_clean_error() {
     fails(&["--sampler", "nope", "-o", o], "unknown sampler");
     fails(&["--threads", "0", "-o", o], "--threads");
     fails(&["--maxdepth", "99999999", "-o", o], "--maxdepth");
+    fails(&["--threshold", "1.5", "-o", o], "--threshold");
+    fails(&["--threshold", "NaN", "-o", o], "--threshold");
     fails(&["-o", dir.join("x.jpg").to_str().unwrap()], ".exr");
     fails(
         &["-o", dir.join("missing/x.png").to_str().unwrap()],

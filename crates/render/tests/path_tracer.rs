@@ -48,6 +48,7 @@ fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64
         },
         threads: Some(2),
         tile_size: 16,
+        ..RenderOptions::default()
     };
     let out = render(scene, &opts, &NoProgress).unwrap();
     assert_eq!(out.stats.nonfinite_samples, 0);

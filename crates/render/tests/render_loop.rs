@@ -26,6 +26,7 @@ fn opts(sampler: SamplerName, spp: u32, threads: usize) -> RenderOptions {
         },
         threads: Some(threads),
         tile_size: 8,
+        ..RenderOptions::default()
     }
 }
 
@@ -57,6 +58,24 @@ fn output_is_bit_identical_with_one_and_two_threads() {
             "{name}: seed ignored"
         );
     }
+}
+
+#[test]
+fn paper_threshold_reaches_the_sampler() {
+    // Threshold 1 leaves every column unflipped: the reproducible paper
+    // sampler then renders exactly what plain Sobol renders; threshold 0.5
+    // does not.
+    let scene = cornell_box([16, 16]).unwrap();
+    let sobol = render(&scene, &opts(SamplerName::Sobol, 4, 2), &NoProgress).unwrap();
+    let paper = |t: f64| {
+        let o = RenderOptions {
+            threshold: t,
+            ..opts(SamplerName::PaperRepro, 4, 2)
+        };
+        render(&scene, &o, &NoProgress).unwrap()
+    };
+    assert_eq!(bits(paper(1.0).image.pixels()), bits(sobol.image.pixels()));
+    assert_ne!(bits(paper(0.5).image.pixels()), bits(sobol.image.pixels()));
 }
 
 #[test]
@@ -227,6 +246,14 @@ fn progress_reports_every_tile_and_bad_options_are_errors() {
         RenderOptions {
             tile_size: 0,
             ..opts(SamplerName::ZSobol, 1, 1)
+        },
+        RenderOptions {
+            threshold: f64::NAN,
+            ..opts(SamplerName::PaperRepro, 1, 1)
+        },
+        RenderOptions {
+            threshold: 1.5,
+            ..opts(SamplerName::Paper, 1, 1)
         },
     ] {
         assert!(render(&scene, &bad, &NoProgress).is_err());

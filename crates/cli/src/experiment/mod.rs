@@ -18,7 +18,8 @@
 //!   srgb8: {mse, relmse, rmse, mae} (each {mean, sd}),
 //!   relmse_ratio_to_sobol (number or null), runs: [{seed, time_s, linear:
 //!   {mse, relmse, rmse, mae}, srgb8: {...}}], convergence: [{spp, relmse}],
-//!   convergence_slope }], threshold_sweep: [{threshold, star_discrepancy}],
+//!   convergence_slope }], threshold_sweep: [{threshold, star_discrepancy,
+//!   relmse, srgb8_relmse}],
 //!   wall_time_s }`.
 //!
 //! The reference (`--ref-spp` samples per pixel with `sobol-owen`, an
@@ -29,10 +30,13 @@
 //! reuse it and say so on stderr. Every file is written to a temporary file
 //! and renamed into place.
 
+mod reference;
 mod report;
+mod results;
 mod run;
 mod scene;
 mod stats;
+mod sweep;
 
 use std::path::PathBuf;
 
@@ -90,7 +94,7 @@ pub struct ExperimentArgs {
     /// Environment map (lat-long 2:1 or equal-area square) replacing the built-in sky.
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
-    /// Paper permutation threshold used by the point figure and the discrepancy sweep.
+    /// Paper permutation threshold of the paper's samplers (renders and point figure).
     #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
     threshold: f64,
     /// Maximum path depth.
@@ -132,7 +136,7 @@ pub struct ExperimentConfig {
     pub conv_max: u32,
     /// Environment map.
     pub envmap: Option<PathBuf>,
-    /// Paper threshold (figure and sweep).
+    /// Paper threshold (renders of `paper`/`paper-repro` and the figure).
     pub threshold: f64,
     /// Maximum depth.
     pub max_depth: u32,

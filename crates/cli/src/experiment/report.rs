@@ -11,7 +11,7 @@ use lowdisc_image::{Normalization, PixelError, RgbImage, crop, upscale_nearest, 
 use lowdisc_plot::{LineChart, ScatterGrid, Series};
 use serde_json::json;
 
-use super::run::{Images, Results, SamplerResult};
+use super::results::{Images, Results, SamplerResult};
 use super::stats::MeanSd;
 use super::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 
@@ -75,22 +75,30 @@ fn plots(config: &ExperimentConfig, results: &Results) -> Result<()> {
         chart = chart.with(Series::new(format!("{} (slope {slope})", s.name), pts));
     }
     chart.to_canvas().save(config.out.join("convergence.png"))?;
-    let mut sweep = LineChart::log_log(
-        "paper-repro: star discrepancy of one pixel",
-        "threshold",
-        "D*",
+    let sweep_chart = |title: &str, y: &str, name: String, pts: Vec<[f64; 2]>| {
+        let mut c = LineChart::log_log(title, "threshold", y);
+        c.x_log = false;
+        c.y_log = false;
+        c.size = [520, 360];
+        c.with(Series::new(name, pts)).to_canvas()
+    };
+    let sweep = &results.threshold_sweep;
+    let error = sweep_chart(
+        "paper-repro: relMSE vs threshold",
+        "relMSE (linear)",
+        format!("{} spp, mean of {} runs", config.spp, config.runs),
+        sweep.iter().map(|p| [p.threshold, p.relmse.mean]).collect(),
     );
-    sweep.x_log = false;
-    sweep.y_log = false;
-    let pts = results
-        .threshold_sweep
-        .iter()
-        .map(|p| [p.threshold, p.star_discrepancy])
-        .collect();
-    sweep
-        .with(Series::new(format!("{} samples", config.spp), pts))
-        .to_canvas()
-        .save(config.out.join("threshold_sweep.png"))?;
+    let disc = sweep_chart(
+        "paper-repro: D* of one pixel",
+        "D*",
+        format!("{} samples", config.spp),
+        sweep
+            .iter()
+            .map(|p| [p.threshold, p.star_discrepancy])
+            .collect(),
+    );
+    crate::compose::grid(vec![vec![error, disc]]).save(config.out.join("threshold_sweep.png"))?;
     // The paper's figure: 2x2 pixels, `spp` samples each.
     let mut panels = Vec::new();
     for name in [
@@ -196,17 +204,25 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
         );
     }
     md.push_str("\n## Convergence\n\n![](convergence.png)\n\n## Threshold sweep (paper's method)\n\n\
-Star discrepancy of one pixel's film positions (dimensions 0-1, permuted) from `paper-repro` against the threshold. \
-The renderer uses the catalog's default threshold (0.5), so relMSE against the threshold is not measured here.\n\n\
-![](threshold_sweep.png)\n\n| threshold | star discrepancy |\n|---|---|\n");
+`paper-repro` rendered at each threshold (the probability that a generator-matrix column is left unflipped; \
+1 is plain Sobol), mean ± sd over the runs' seeds, and the star discrepancy of one pixel's film positions \
+(dimensions 0-1, permuted too).\n\n\
+![](threshold_sweep.png)\n\n| threshold | relMSE (linear) | relMSE (sRGB8) | star discrepancy |\n|---|---|---|---|\n");
     for p in &results.threshold_sweep {
-        let _ = writeln!(md, "| {} | {:.5} |", p.threshold, p.star_discrepancy);
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {:.5} |",
+            p.threshold,
+            ms(p.relmse),
+            ms(p.srgb8_relmse),
+            p.star_discrepancy
+        );
     }
     md.push_str("\n## The paper's figure\n\n![](figure.png)\n\n## results.json\n\n\
 `{schema, command, version, git_hash, machine: {cpu, cores}, settings, reference: {file, cached, time_s}, \
 samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, srgb8: {mse, relmse, rmse, mae}, \
 relmse_ratio_to_sobol, runs: [{seed, time_s, linear, srgb8}], convergence: [{spp, relmse}], convergence_slope}], \
-threshold_sweep: [{threshold, star_discrepancy}], wall_time_s}`; every metric summary is `{mean, sd}`.\n");
+threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], wall_time_s}`; every metric summary is `{mean, sd}`.\n");
     md
 }
 

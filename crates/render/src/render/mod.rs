@@ -51,6 +51,11 @@ pub struct RenderOptions {
     pub threads: Option<usize>,
     /// Tile side in pixels.
     pub tile_size: u32,
+    /// The paper permutation's threshold in `[0, 1]` (samplers `paper` and
+    /// `paper-repro`; ignored by the others).
+    pub threshold: f64,
+    /// Let the paper permutation act on the film dimensions 0-1 too.
+    pub paper_all_dims: bool,
 }
 
 impl Default for RenderOptions {
@@ -62,6 +67,8 @@ impl Default for RenderOptions {
             integrator: PathIntegrator::default(),
             threads: None,
             tile_size: 16,
+            threshold: SamplerConfig::DEFAULT_THRESHOLD,
+            paper_all_dims: false,
         }
     }
 }
@@ -86,6 +93,12 @@ impl RenderOptions {
             return bad(format!(
                 "tile size {} must be between 1 and 4096",
                 self.tile_size
+            ));
+        }
+        if !(0.0..=1.0).contains(&self.threshold) {
+            return bad(format!(
+                "paper threshold {} must be in [0, 1]",
+                self.threshold
             ));
         }
         if let Some(t) = self.threads {
@@ -205,6 +218,8 @@ pub fn render(
     config.seed = opts.seed;
     config.spp = opts.spp;
     config.resolution = [width, height];
+    config.threshold = opts.threshold;
+    config.paper_all_dims = opts.paper_all_dims;
     let sampler = config.build()?;
     let mut warnings = Vec::new();
     if scene.lights().is_empty() {

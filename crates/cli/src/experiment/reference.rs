@@ -1,0 +1,82 @@
+//! The converged reference render, cached on disk under a key of the
+//! scene's content and every setting that changes the image.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
+use lowdisc_image::RgbImage;
+use lowdisc_render::render::{NoProgress, render};
+use lowdisc_render::scene::Scene;
+
+use super::results::ReferenceInfo;
+use super::run::{options, progress};
+use super::stats::{FNV_OFFSET, fnv1a};
+use super::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+
+/// The reference, from the cache when present.
+pub fn reference(
+    config: &ExperimentConfig,
+    scene: &Scene,
+    scene_hash: u64,
+) -> Result<(RgbImage, ReferenceInfo)> {
+    let key = format!(
+        "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
+        config.resolution,
+        config.ref_spp,
+        REF_SAMPLER.as_str(),
+        REF_SEED,
+        config.max_depth,
+        env!("CARGO_PKG_VERSION")
+    );
+    let hash = fnv1a(FNV_OFFSET, key.as_bytes());
+    let dir = cache_dir(&config.out);
+    let file = dir.join(format!("ref-{hash:016x}.pfm"));
+    if file.is_file() {
+        if let Ok(image) = lowdisc_image::read_image(&file) {
+            progress(
+                config,
+                &format!("reusing cached reference {}", file.display()),
+            );
+            return Ok((
+                image,
+                ReferenceInfo {
+                    file,
+                    cached: true,
+                    time_s: 0.0,
+                },
+            ));
+        }
+    }
+    progress(
+        config,
+        &format!(
+            "rendering reference: {} spp with {}",
+            config.ref_spp,
+            REF_SAMPLER.as_str()
+        ),
+    );
+    let out = render(
+        scene,
+        &options(config, REF_SAMPLER, REF_SEED, config.ref_spp),
+        &NoProgress,
+    )?;
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;
+    lowdisc_image::write_pfm(&file, &out.image)?;
+    progress(config, &format!("cached reference in {}", file.display()));
+    Ok((
+        out.image,
+        ReferenceInfo {
+            file,
+            cached: false,
+            time_s: out.stats.time.as_secs_f64(),
+        },
+    ))
+}
+
+/// `<parent of out>/lowdisc-ref-cache`.
+pub fn cache_dir(out: &Path) -> PathBuf {
+    out.parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."))
+        .join("lowdisc-ref-cache")
+}
