@@ -20,11 +20,42 @@ pub fn mix64(mut x: u64) -> u64 {
 /// so `[a]` and `[a, 0]` differ.
 #[inline]
 pub fn hash_words(words: &[u64]) -> u64 {
-    let mut h = 0x9e37_79b9_7f4a_7c15u64 ^ (words.len() as u64);
-    for &w in words {
-        h = mix64(h ^ w).wrapping_add(0x9e37_79b9_7f4a_7c15);
+    words
+        .iter()
+        .fold(WordHasher::new(words.len()), |h, &w| h.push(w))
+        .finish()
+}
+
+/// [`hash_words`] one word at a time, so a prefix shared by many hashes is
+/// absorbed once: `WordHasher::new(n).push(w_1)...push(w_n).finish()` equals
+/// `hash_words(&[w_1, ..., w_n])` (the length is fixed up front).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct WordHasher {
+    state: u64,
+}
+
+impl WordHasher {
+    /// A hasher of `len` words.
+    #[inline]
+    pub fn new(len: usize) -> Self {
+        WordHasher {
+            state: 0x9e37_79b9_7f4a_7c15u64 ^ (len as u64),
+        }
     }
-    mix64(h)
+
+    /// Absorbs the next word.
+    #[inline]
+    pub fn push(self, word: u64) -> Self {
+        WordHasher {
+            state: mix64(self.state ^ word).wrapping_add(0x9e37_79b9_7f4a_7c15),
+        }
+    }
+
+    /// The hash (meaningful once `len` words were pushed).
+    #[inline]
+    pub fn finish(self) -> u64 {
+        mix64(self.state)
+    }
 }
 
 /// Hash of two words.
@@ -69,6 +100,15 @@ mod tests {
         assert_eq!(hash2(1, 2), hash2(1, 2));
         assert_ne!(hash2(1, 2), hash2(2, 1));
         assert_ne!(hash_words(&[5]), hash_words(&[5, 0]));
+        // The chain as first written, one round per word.
+        let words = [3u64, u64::MAX, 0, 17, 1 << 40];
+        let mut h = 0x9e37_79b9_7f4a_7c15u64 ^ 5;
+        for &w in &words {
+            h = mix64(h ^ w).wrapping_add(0x9e37_79b9_7f4a_7c15);
+        }
+        assert_eq!(hash_words(&words), mix64(h));
+        let prefix = WordHasher::new(5).push(3).push(u64::MAX).push(0);
+        assert_eq!(prefix.push(17).push(1 << 40).finish(), mix64(h));
     }
 
     #[test]

@@ -83,6 +83,51 @@ impl Pcg32 {
         }
         self.state = acc_mult.wrapping_mul(self.state).wrapping_add(acc_plus);
     }
+
+    /// Skips the draws of a precomputed [`Jump`]: the same state as
+    /// [`Pcg32::advance`] by the jump's length, in two multiplications.
+    #[inline]
+    pub fn jump(&mut self, jump: &Jump) {
+        self.state = jump
+            .mult
+            .wrapping_mul(self.state)
+            .wrapping_add(self.increment.wrapping_mul(jump.sum));
+    }
+}
+
+/// A jump of a fixed number of draws for every PCG32 stream.
+///
+/// `n` steps of the LCG map the state `x` to `M^n x + c (1 + M + ... +
+/// M^(n-1))` (mod `2^64`), with `c` the stream's increment: both factors
+/// depend on `n` only, so they are computed once (by the doubling of
+/// [`Pcg32::advance`] with increment 1) and a jump is two multiplications.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Jump {
+    /// `M^n`.
+    mult: u64,
+    /// `1 + M + ... + M^(n-1)`.
+    sum: u64,
+}
+
+impl Jump {
+    /// The jump of `delta` draws.
+    pub fn new(delta: u64) -> Self {
+        let mut unit = Pcg32 {
+            state: 0,
+            increment: 1,
+        };
+        unit.advance(delta);
+        let sum = unit.state;
+        let mut one = Pcg32 {
+            state: 1,
+            increment: 0,
+        };
+        one.advance(delta);
+        Jump {
+            mult: one.state,
+            sum,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -114,6 +159,28 @@ mod tests {
         assert_eq!(a, b);
         b.advance(0);
         assert_eq!(a.next_u32(), b.next_u32());
+    }
+
+    #[test]
+    fn jumps_equal_advance() {
+        let mut rng = Pcg32::new(99, 12345);
+        for delta in [0u64, 1, 2, 7, 1000, (1 << 32) - 2, 1 << 32, u64::MAX] {
+            let jump = Jump::new(delta);
+            for stream in [0u64, 3, u64::MAX >> 1] {
+                let mut a = Pcg32::new(rng.next_u32().into(), stream);
+                let mut b = a.clone();
+                a.advance(delta);
+                b.jump(&jump);
+                assert_eq!(a, b, "delta {delta} stream {stream}");
+            }
+        }
+        let mut a = Pcg32::new(5, 6);
+        let mut b = a.clone();
+        a.jump(&Jump::new(3));
+        for _ in 0..3 {
+            b.next_u32();
+        }
+        assert_eq!(a, b);
     }
 
     #[test]

@@ -15,10 +15,14 @@
 //! All four keep a digital net a digital net: the first `2^m` Sobol points
 //! of dimensions 0 and 1 remain a (0,m,2)-net (tested in `sobol::tests`).
 
-use crate::hash::{hash2, hash3, mix64};
+mod cache;
+
+pub use cache::ScrambleCache;
+
+use crate::hash::{hash2, mix64};
 
 /// The initial and per-round constant of [`crate::hash::hash_words`], which
-/// [`dimension_seeds_4`] unrolls (tests check the two agree).
+/// [`dimension_seeds_4`] and the Owen scramble unroll (tests check they agree).
 const HASH_INIT: u64 = 0x9e37_79b9_7f4a_7c15;
 
 /// How digit words are randomized.
@@ -50,9 +54,24 @@ impl Randomize {
     pub fn apply(self, word: u32, dim: u32) -> u32 {
         match self {
             Randomize::None => word,
-            Randomize::Xor { seed } => word ^ dimension_seed(seed, dim),
-            Randomize::Owen { seed } => owen_scramble(word, dimension_seed(seed, dim)),
-            Randomize::FastOwen { seed } => fast_owen_scramble(word, dimension_seed(seed, dim)),
+            Randomize::Xor { seed } | Randomize::Owen { seed } | Randomize::FastOwen { seed } => {
+                self.apply_dimension_seed(word, dimension_seed(seed, dim))
+            }
+        }
+    }
+
+    /// The scramble of [`Randomize::apply`] with the per-dimension seed
+    /// already derived: `self.apply(word, dim)` equals
+    /// `self.apply_dimension_seed(word, dimension_seed(seed, dim))` (the
+    /// seed inside `self` is ignored). Lets callers that scramble many words
+    /// of one dimension hash the seed once.
+    #[inline]
+    pub fn apply_dimension_seed(self, word: u32, dimension_seed: u32) -> u32 {
+        match self {
+            Randomize::None => word,
+            Randomize::Xor { .. } => word ^ dimension_seed,
+            Randomize::Owen { .. } => owen_scramble(word, dimension_seed),
+            Randomize::FastOwen { .. } => fast_owen_scramble(word, dimension_seed),
         }
     }
 
@@ -129,14 +148,59 @@ fn finish_round(shared: u64, word: u64) -> u64 {
 /// are scrambled.
 #[inline]
 pub fn owen_scramble(word: u32, seed: u32) -> u32 {
+    // hash3(seed, b, prefix): the round that absorbs `seed` is shared by
+    // all 32 digits (see [`OwenKey`] for the round of `b` too).
+    let shared = owen_seed_round(seed);
     let mut out = word;
     for b in 0..32u32 {
-        // Digits 0..b of the input (the prefix), aligned at the bottom.
-        let prefix = if b == 0 { 0 } else { word >> (32 - b) };
-        let flip = hash3(u64::from(seed), u64::from(b), u64::from(prefix)) >> 63;
-        out ^= (flip as u32) << (31 - b);
+        let round = mix64(shared ^ u64::from(b)).wrapping_add(HASH_INIT);
+        out ^= owen_flip(round, word, b) << (31 - b);
     }
     out
+}
+
+/// The first round of `hash3(seed, _, _)` (see [`crate::hash::hash_words`]).
+#[inline(always)]
+fn owen_seed_round(seed: u32) -> u64 {
+    mix64(HASH_INIT ^ 3 ^ u64::from(seed)).wrapping_add(HASH_INIT)
+}
+
+/// The flip of digit `b` of `word`: the top bit of `hash3(seed, b, prefix)`
+/// finished from its first two rounds `round`.
+#[inline(always)]
+fn owen_flip(round: u64, word: u32, b: u32) -> u32 {
+    // Digits 0..b of the input (the prefix), aligned at the bottom.
+    let prefix = if b == 0 { 0 } else { word >> (32 - b) };
+    (mix64(mix64(round ^ u64::from(prefix)).wrapping_add(HASH_INIT)) >> 63) as u32
+}
+
+/// [`owen_scramble`] with one seed's hashing done in advance: the first two
+/// rounds of `hash3(seed, b, _)` for the 32 digits `b`, so a scramble costs
+/// two bit mixes per digit instead of three. For callers that scramble
+/// several words with one seed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct OwenKey {
+    rounds: [u64; 32],
+}
+
+impl OwenKey {
+    /// The key of `seed` (a per-dimension seed, as [`owen_scramble`] takes).
+    pub fn new(seed: u32) -> Self {
+        let shared = owen_seed_round(seed);
+        OwenKey {
+            rounds: core::array::from_fn(|b| mix64(shared ^ b as u64).wrapping_add(HASH_INIT)),
+        }
+    }
+
+    /// Equals `owen_scramble(word, seed)` for the seed of [`OwenKey::new`].
+    #[inline]
+    pub fn scramble(&self, word: u32) -> u32 {
+        let mut out = word;
+        for (b, &round) in (0..32u32).zip(&self.rounds) {
+            out ^= owen_flip(round, word, b) << (31 - b);
+        }
+        out
+    }
 }
 
 /// Fast hash-based Owen scrambling (Laine-Karras style permutation of a
@@ -196,6 +260,49 @@ pub fn derive_seed(seed: u64, salt: u64) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The definition of [`owen_scramble`], one full `hash3` per digit.
+    fn owen_reference(word: u32, seed: u32) -> u32 {
+        let mut out = word;
+        for b in 0..32u32 {
+            let prefix = if b == 0 { 0 } else { word >> (32 - b) };
+            let h = crate::hash::hash3(u64::from(seed), u64::from(b), u64::from(prefix));
+            out ^= ((h >> 63) as u32) << (31 - b);
+        }
+        out
+    }
+
+    #[test]
+    fn owen_scrambles_equal_the_definition() {
+        let mut state = 0x0fed_cba9_8765_4321u64;
+        for _ in 0..3000 {
+            state = mix64(state.wrapping_add(3));
+            let (word, seed) = (state as u32, (state >> 32) as u32);
+            let key = OwenKey::new(seed);
+            for w in [word, 0, u32::MAX, word & 0xf000_0000] {
+                let want = owen_reference(w, seed);
+                assert_eq!(owen_scramble(w, seed), want);
+                assert_eq!(key.scramble(w), want);
+            }
+        }
+    }
+
+    #[test]
+    fn apply_dimension_seed_equals_apply() {
+        for seed in [0u64, 9, u64::MAX] {
+            for r in [
+                Randomize::None,
+                Randomize::Xor { seed },
+                Randomize::Owen { seed },
+                Randomize::FastOwen { seed },
+            ] {
+                for (dim, word) in [(0u32, 0u32), (1, 0x8000_0001), (77, 0xdead_beef)] {
+                    let s = dimension_seed(seed, dim);
+                    assert_eq!(r.apply_dimension_seed(word, s), r.apply(word, dim));
+                }
+            }
+        }
+    }
 
     #[test]
     fn four_lane_paths_equal_the_single_lane_ones() {

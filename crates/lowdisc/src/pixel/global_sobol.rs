@@ -44,10 +44,13 @@
 //!   columns no longer form a non-singular system, so the `spp` offsets of a
 //!   pixel are no longer a (0,m,2)-net and can coincide.
 
+use alloc::boxed::Box;
+
 use super::PixelSampler;
 use crate::hash::{hash_words, hash2};
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
-use crate::sobol::{NUM_DIMENSIONS, matrix, sample, sample_randomized};
+use crate::scramble::{OwenKey, ScrambleCache, dimension_seed};
+use crate::sobol::{NUM_DIMENSIONS, matrix, sample};
 use crate::{Error, Randomize, to_f32};
 
 /// How a [`GlobalSobolSampler`] turns Sobol points into values.
@@ -86,13 +89,37 @@ pub struct GlobalSobolSampler {
     inverse: [u32; 32],
     mode: GlobalSobolMode,
     seed: u64,
-    /// Randomization of dimensions `>= 2` (Randomize modes).
-    dims_randomize: Randomize,
+    /// The randomizations of the Randomize modes, with their hashing kept
+    /// (boxed: the sampler enum stays small).
+    scrambles: Box<Scrambles>,
     /// The literal mode's stream.
     literal: Option<PaperLiteral>,
     pixel: [u32; 2],
     index: u32,
     dimension: u32,
+}
+
+/// The randomizations of a [`GlobalSobolSampler`] in a Randomize mode.
+#[derive(Debug, Clone)]
+struct Scrambles {
+    /// Randomization of dimensions `>= 2`, with its per-dimension seeds kept.
+    dims: ScrambleCache,
+    /// The in-pixel offset's scramble for the last pixel.
+    offset: OffsetScramble,
+}
+
+/// The randomization of the in-pixel offset for one pixel, kept while the
+/// pixel stays the same.
+#[derive(Debug, Clone)]
+struct OffsetScramble {
+    /// The pixel (reduced modulo `R`) the fields are for, if any.
+    pixel: Option<[u32; 2]>,
+    /// The randomization reseeded for that pixel.
+    randomize: Randomize,
+    /// Its seeds of dimensions 0 and 1.
+    seeds: [u32; 2],
+    /// Its Owen keys of dimensions 0 and 1 (Owen only).
+    owen: Option<[OwenKey; 2]>,
 }
 
 /// The top `k` digits of a word as an integer (`k <= 16`).
@@ -181,7 +208,15 @@ impl GlobalSobolSampler {
             inverse,
             mode,
             seed,
-            dims_randomize,
+            scrambles: Box::new(Scrambles {
+                dims: ScrambleCache::new(dims_randomize),
+                offset: OffsetScramble {
+                    pixel: None,
+                    randomize: Randomize::None,
+                    seeds: [0; 2],
+                    owen: None,
+                },
+            }),
             literal,
             pixel: [0, 0],
             index: 0,
@@ -253,7 +288,7 @@ impl GlobalSobolSampler {
         let dim = Self::sobol_dim(d);
         match self.mode {
             GlobalSobolMode::Randomize(_) => {
-                sample_randomized(self.index, dim, self.dims_randomize)
+                self.scrambles.dims.apply(sample(self.index, dim), dim)
             }
             GlobalSobolMode::PaperLiteral { .. } => match self.literal.as_mut() {
                 Some(stream) => stream.sample(self.index, dim),
@@ -301,11 +336,25 @@ impl GlobalSobolSampler {
         match self.mode {
             GlobalSobolMode::Randomize(r) if r != Randomize::None => {
                 let mask = (1u32 << k) - 1;
-                let [px, py] = self.pixel.map(|c| u64::from(c & mask));
-                let pixel_seed =
-                    hash_words(&[self.seed, super::randomize_seed(r), PIXEL_SALT, px, py]);
-                let r = super::reseed(r, pixel_seed);
-                [r.apply(offset[0], 0), r.apply(offset[1], 1)]
+                let pixel = self.pixel.map(|c| c & mask);
+                let cache = &mut self.scrambles.offset;
+                if cache.pixel != Some(pixel) {
+                    let [px, py] = pixel.map(u64::from);
+                    let pixel_seed =
+                        hash_words(&[self.seed, super::randomize_seed(r), PIXEL_SALT, px, py]);
+                    cache.randomize = super::reseed(r, pixel_seed);
+                    cache.seeds = [dimension_seed(pixel_seed, 0), dimension_seed(pixel_seed, 1)];
+                    cache.owen =
+                        matches!(r, Randomize::Owen { .. }).then(|| cache.seeds.map(OwenKey::new));
+                    cache.pixel = Some(pixel);
+                }
+                // Equal to `cache.randomize.apply(offset[d], d)`.
+                core::array::from_fn(|d| match &cache.owen {
+                    Some(keys) => keys[d].scramble(offset[d]),
+                    None => cache
+                        .randomize
+                        .apply_dimension_seed(offset[d], cache.seeds[d]),
+                })
             }
             _ => offset,
         }
@@ -335,3 +384,6 @@ impl PixelSampler for GlobalSobolSampler {
         self.get_pixel_2d_words().map(to_f32)
     }
 }
+
+#[cfg(test)]
+mod tests;

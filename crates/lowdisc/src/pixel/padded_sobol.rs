@@ -15,28 +15,90 @@
 //! (0,m,2)-net (kept by XOR, Owen and fast Owen). For other counts they are
 //! the first `spp` points of the (0,2)-sequence: well spread, but not a
 //! complete net. Sample indices `>= spp` are reduced modulo `spp`.
+//!
+//! ## Speed
+//! Everything but the sample index's permutation and the scramble of the
+//! word depends on the pixel and the dimension key only, so for keys below
+//! `CACHED_KEYS` (and the pixel key) it is kept per key while the pixel
+//! stays the same (a renderer visits a pixel's samples one after another):
+//! the hash, the permutation's key, the per-dimension scramble seeds and,
+//! for Owen scrambling, the seed rounds of the 32 digit hashes
+//! ([`OwenKey`]). The seed and randomization seed, which start every hash,
+//! are absorbed once per pixel. The values are those of the definition
+//! ([`PaddedSobolSampler::permuted_index`] and the plain scramble; tests
+//! check both paths agree).
+
+use alloc::vec::Vec;
 
 use super::PixelSampler;
-use crate::hash::{hash_words, mix64};
+use crate::hash::{WordHasher, hash_words, mix64};
+use crate::scramble::{OwenKey, dimension_seed};
 use crate::sobol::sample;
 use crate::{Error, Randomize, to_f32};
 
 /// Dimension key of the in-pixel offset (above every `u32` dimension).
 const PIXEL_KEY: u64 = 1 << 32;
+/// Dimension keys below this are cached (slot `1 + key`; slot 0 is the
+/// pixel key).
+const CACHED_KEYS: u64 = 1024;
 
 /// A seeded bijection of `m`-bit integers: an odd multiply-add modulo `2^m`
 /// followed by a nested bit scramble (each bit flipped by a hash of the bits
-/// above it).
-fn scramble_bits(x: u64, m: u32, h: u64) -> u64 {
-    let mask = if m >= 64 { u64::MAX } else { (1u64 << m) - 1 };
-    let mut x = x.wrapping_mul(h | 1).wrapping_add(h >> 17) & mask;
-    let key = mix64(h ^ 0x5bd1_e995_1234_5678);
-    for b in (0..m).rev() {
-        let higher = x >> b >> 1;
-        let flip = mix64(key ^ higher.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ u64::from(b)) >> 63;
-        x ^= flip << b;
+/// above it). The seed's own hashing is done by [`Permutation::new`].
+#[derive(Debug, Clone, Copy)]
+struct Permutation {
+    /// The size `n` of the permuted range.
+    n: u32,
+    /// `ceil(log2 n)`.
+    m: u32,
+    /// The seed `h`.
+    h: u64,
+    /// The key of the bit flips.
+    key: u64,
+}
+
+impl Permutation {
+    /// The permutation of `[0, n)` seeded by `h`.
+    #[inline]
+    fn new(n: u32, h: u64) -> Self {
+        Permutation {
+            n,
+            m: super::ceil_log2(u64::from(n)),
+            h,
+            key: mix64(h ^ 0x5bd1_e995_1234_5678),
+        }
     }
-    x
+
+    /// One pass of the `m`-bit bijection.
+    #[inline]
+    fn scramble_bits(&self, x: u64) -> u64 {
+        let (m, h) = (self.m, self.h);
+        let mask = if m >= 64 { u64::MAX } else { (1u64 << m) - 1 };
+        let mut x = x.wrapping_mul(h | 1).wrapping_add(h >> 17) & mask;
+        for b in (0..m).rev() {
+            let higher = x >> b >> 1;
+            let flip =
+                mix64(self.key ^ higher.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ u64::from(b)) >> 63;
+            x ^= flip << b;
+        }
+        x
+    }
+
+    /// Element `i` (reduced modulo `n`), by cycle-walking.
+    #[inline]
+    fn element(&self, i: u32) -> u32 {
+        let n = self.n;
+        if n <= 1 {
+            return 0;
+        }
+        let mut x = u64::from(i % n);
+        loop {
+            x = self.scramble_bits(x);
+            if x < u64::from(n) {
+                return x as u32;
+            }
+        }
+    }
 }
 
 /// Element `i` of a seeded random permutation of `[0, n)` (`i` is reduced
@@ -44,17 +106,33 @@ fn scramble_bits(x: u64, m: u32, h: u64) -> u64 {
 /// is applied by cycle-walking until the result falls below `n`, which is a
 /// bijection of `[0, n)` for every `n`.
 pub fn permutation_element(i: u32, n: u32, seed: u64) -> u32 {
-    if n <= 1 {
-        return 0;
-    }
-    let m = super::ceil_log2(u64::from(n));
-    let mut x = u64::from(i % n);
-    loop {
-        x = scramble_bits(x, m, seed);
-        if x < u64::from(n) {
-            return x as u32;
-        }
-    }
+    Permutation::new(n, seed).element(i)
+}
+
+/// What one dimension key needs for the current pixel.
+#[derive(Debug, Clone)]
+struct Entry {
+    /// Whether the fields below are for `pixel`.
+    valid: bool,
+    /// The pixel they are for.
+    pixel: [u32; 2],
+    /// The sample-index permutation.
+    permutation: Permutation,
+    /// Scramble seeds of Sobol dimensions 0 and 1.
+    seeds: [u32; 2],
+}
+
+/// Per-key caches (see the module documentation).
+#[derive(Debug, Clone, Default)]
+struct Cache {
+    /// The pixel `prefix` is for, if any.
+    pixel: Option<[u32; 2]>,
+    /// The hash of every key after the seed, the randomization seed and the
+    /// pixel's coordinates.
+    prefix: Option<WordHasher>,
+    entries: Vec<Entry>,
+    /// Owen keys of Sobol dimensions 0 and 1, per slot (Owen only).
+    owen: Vec<[OwenKey; 2]>,
 }
 
 /// pbrt-v4-style padded Sobol sampler; see the module documentation.
@@ -66,6 +144,8 @@ pub struct PaddedSobolSampler {
     pixel: [u32; 2],
     sample_index: u32,
     dimension: u32,
+    /// Hashes reused between values (never changes a value).
+    cache: Cache,
 }
 
 impl PaddedSobolSampler {
@@ -80,6 +160,7 @@ impl PaddedSobolSampler {
             pixel: [0, 0],
             sample_index: 0,
             dimension: 0,
+            cache: Cache::default(),
         })
     }
 
@@ -105,33 +186,96 @@ impl PaddedSobolSampler {
         permutation_element(self.sample_index, self.spp, mix64(self.hash(key)))
     }
 
-    /// Sobol dimensions 0-1 at the permuted index for `key`, scrambled.
-    fn words_2d(&self, key: u64) -> [u32; 2] {
+    /// Sobol dimensions `0..N` (`N` = 1 or 2) at the permuted index for
+    /// `key`, scrambled: the definition.
+    fn direct_words<const N: usize>(&self, key: u64) -> [u32; N] {
         let h = self.hash(key);
         let index = permutation_element(self.sample_index, self.spp, mix64(h));
         let r = super::reseed(self.randomize, h);
-        [r.apply(sample(index, 0), 0), r.apply(sample(index, 1), 1)]
+        core::array::from_fn(|d| r.apply(sample(index, d as u32), d as u32))
+    }
+
+    /// As [`PaddedSobolSampler::direct_words`], through the caches.
+    #[inline]
+    fn words<const N: usize>(&mut self, key: u64) -> [u32; N] {
+        let slot = match key {
+            PIXEL_KEY => 0,
+            k if k < CACHED_KEYS => k as usize + 1,
+            _ => return self.direct_words(key),
+        };
+        let valid = self
+            .cache
+            .entries
+            .get(slot)
+            .is_some_and(|e| e.valid && e.pixel == self.pixel);
+        if !valid {
+            self.refresh(slot, key);
+        }
+        let entry = &self.cache.entries[slot];
+        let index = entry.permutation.element(self.sample_index);
+        core::array::from_fn(|d| {
+            let word = sample(index, d as u32);
+            match self.randomize {
+                Randomize::Owen { .. } => self.cache.owen[slot][d].scramble(word),
+                r => r.apply_dimension_seed(word, entry.seeds[d]),
+            }
+        })
+    }
+
+    /// Computes the entry of `slot` (dimension key `key`) for the pixel.
+    #[cold]
+    fn refresh(&mut self, slot: usize, key: u64) {
+        let cache = &mut self.cache;
+        if cache.pixel != Some(self.pixel) {
+            let rs = super::randomize_seed(self.randomize);
+            let [x, y] = self.pixel.map(u64::from);
+            cache.prefix = Some(WordHasher::new(5).push(self.seed).push(rs).push(x).push(y));
+            cache.pixel = Some(self.pixel);
+        }
+        let prefix = cache.prefix.unwrap_or(WordHasher::new(5));
+        let h = prefix.push(key).finish();
+        let seeds = [dimension_seed(h, 0), dimension_seed(h, 1)];
+        let entry = Entry {
+            valid: true,
+            pixel: self.pixel,
+            permutation: Permutation::new(self.spp, mix64(h)),
+            seeds,
+        };
+        let owen = matches!(self.randomize, Randomize::Owen { .. });
+        while cache.entries.len() <= slot {
+            // Placeholders, invalid until their own key is asked for.
+            cache.entries.push(Entry {
+                valid: false,
+                ..entry.clone()
+            });
+            if owen {
+                cache.owen.push(seeds.map(OwenKey::new));
+            }
+        }
+        cache.entries[slot] = entry;
+        if owen {
+            cache.owen[slot] = seeds.map(OwenKey::new);
+        }
     }
 
     /// The next 1-D value as a digit word.
     pub fn get_1d_word(&mut self) -> u32 {
         let key = u64::from(self.dimension);
         self.dimension = self.dimension.wrapping_add(1);
-        let h = self.hash(key);
-        let index = permutation_element(self.sample_index, self.spp, mix64(h));
-        super::reseed(self.randomize, h).apply(sample(index, 0), 0)
+        let [word] = self.words(key);
+        word
     }
 
     /// The next 2-D value as digit words.
     pub fn get_2d_words(&mut self) -> [u32; 2] {
         let key = u64::from(self.dimension);
         self.dimension = self.dimension.wrapping_add(2);
-        self.words_2d(key)
+        self.words(key)
     }
 
     /// The in-pixel offset as digit words.
     pub fn get_pixel_2d_words(&mut self) -> [u32; 2] {
-        self.words_2d(PIXEL_KEY)
+        self.words(PIXEL_KEY)
     }
 }
 
@@ -172,6 +316,40 @@ mod tests {
                     let p = permutation_element(i, n, seed);
                     assert!(p < n && !seen[p as usize], "n {n} seed {seed} i {i}");
                     seen[p as usize] = true;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_cached_path_equals_the_definition() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        for spp in [1u32, 3, 16, 100] {
+            for r in [
+                Randomize::None,
+                Randomize::Xor { seed: 3 },
+                Randomize::Owen { seed: 4 },
+                Randomize::FastOwen { seed: 5 },
+            ] {
+                let mut s = PaddedSobolSampler::new(spp, r, 11).unwrap();
+                for visit in 0..60u32 {
+                    state = mix64(state.wrapping_add(u64::from(visit)));
+                    let pixel = [(state % 3) as u32, u32::MAX - ((state >> 8) % 2) as u32];
+                    let start = if visit % 3 == 0 {
+                        1020
+                    } else {
+                        (state >> 50) as u32 % 4
+                    };
+                    for k in 0..(1 + (state >> 40) as u32 % 4) {
+                        s.start_pixel_sample(pixel, (state >> 20) as u32 + k, start);
+                        assert_eq!(s.get_pixel_2d_words(), s.direct_words::<2>(PIXEL_KEY));
+                        for _ in 0..4 {
+                            let want1 = s.direct_words::<1>(u64::from(s.dimension));
+                            assert_eq!([s.get_1d_word()], want1, "{spp} {r:?}");
+                            let want2 = s.direct_words::<2>(u64::from(s.dimension));
+                            assert_eq!(s.get_2d_words(), want2, "{spp} {r:?}");
+                        }
+                    }
                 }
             }
         }

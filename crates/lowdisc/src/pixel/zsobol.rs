@@ -34,7 +34,17 @@
 //!   32 bits get independent scrambles of the same block). Without a
 //!   randomization that would repeat samples, so `Randomize::None` requires
 //!   `2k + m <= 32`.
+//!
+//! ## Speed
+//! The values are computed as the definition above says by
+//! [`ZSobolSampler::sample_index`], but the sampler's own calls take a
+//! cached path (`cache.rs`) that hashes per dimension key once and per
+//! pixel and key once, leaving `ceil(m / 2)` bit mixes and one scramble per
+//! value. Tests check both paths give the same bits.
 
+mod cache;
+
+use self::cache::{Cache, Layout};
 use super::PixelSampler;
 use crate::hash::{bounded, hash_words, mix64};
 use crate::sobol::sample;
@@ -98,6 +108,8 @@ pub struct ZSobolSampler {
     seed: u64,
     morton: u64,
     dimension: u32,
+    /// Hashes reused between values (never changes a value).
+    cache: Cache,
 }
 
 impl ZSobolSampler {
@@ -126,16 +138,52 @@ impl ZSobolSampler {
                 reason: "unscrambled Z-order Sobol needs 2 log2 R + log2 spp <= 32 index bits",
             });
         }
+        let layout = Layout {
+            seed,
+            randomize,
+            log2_spp,
+            base4_digits: log2_res + log2_spp.div_ceil(2),
+        };
         Ok(ZSobolSampler {
             spp,
             log2_spp,
             log2_res,
-            base4_digits: log2_res + log2_spp.div_ceil(2),
+            base4_digits: layout.base4_digits,
             randomize,
             seed,
             morton: 0,
             dimension: 0,
+            cache: Cache::new(&layout),
         })
+    }
+
+    /// The constants of the cached path.
+    fn layout(&self) -> Layout {
+        Layout {
+            seed: self.seed,
+            randomize: self.randomize,
+            log2_spp: self.log2_spp,
+            base4_digits: self.base4_digits,
+        }
+    }
+
+    /// The scrambled words of Sobol dimensions `0..N` (`N` = 1 or 2) for
+    /// dimension key `key`: the cached path, else the definition.
+    #[inline]
+    fn words<const N: usize>(&mut self, key: u64) -> [u32; N] {
+        let layout = self.layout();
+        match self.cache.words(&layout, key, self.morton) {
+            Some(words) => words,
+            None => self.direct_words(key),
+        }
+    }
+
+    /// The scrambled words of Sobol dimensions `0..N` for `key`, computed
+    /// from the definition ([`ZSobolSampler::sample_index`]).
+    fn direct_words<const N: usize>(&self, key: u64) -> [u32; N] {
+        let index = self.sample_index(key);
+        let r = self.randomizer(key, index >> 32);
+        core::array::from_fn(|d| r.apply(sample(index as u32, d as u32), d as u32))
     }
 
     /// The randomization given at construction.
@@ -158,7 +206,7 @@ impl ZSobolSampler {
             let shift = 2 * i - odd;
             let digit = (self.morton >> shift) & 3;
             let higher = self.morton.checked_shr(shift + 2).unwrap_or(0);
-            let level = mix64(dim_seed ^ u64::from(i).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+            let level = cache::level(dim_seed, u64::from(i));
             let p = bounded(mix64(level ^ higher), 24) as usize;
             index |= u64::from(BASE4_PERMUTATIONS[p][digit as usize]) << shift;
         }
@@ -167,14 +215,6 @@ impl ZSobolSampler {
             index |= (self.morton & 1) ^ flip;
         }
         index
-    }
-
-    /// Sobol dimensions 0-1 at the permuted index for `key`, scrambled.
-    fn words_2d(&self, key: u64) -> [u32; 2] {
-        let index = self.sample_index(key);
-        let r = self.randomizer(key, index >> 32);
-        let low = index as u32;
-        [r.apply(sample(low, 0), 0), r.apply(sample(low, 1), 1)]
     }
 
     /// The randomization of dimension key `key` (and high index bits `high`).
@@ -187,21 +227,20 @@ impl ZSobolSampler {
     pub fn get_1d_word(&mut self) -> u32 {
         let key = u64::from(self.dimension);
         self.dimension = self.dimension.wrapping_add(1);
-        let index = self.sample_index(key);
-        self.randomizer(key, index >> 32)
-            .apply(sample(index as u32, 0), 0)
+        let [word] = self.words(key);
+        word
     }
 
     /// The next 2-D value as digit words.
     pub fn get_2d_words(&mut self) -> [u32; 2] {
         let key = u64::from(self.dimension);
         self.dimension = self.dimension.wrapping_add(2);
-        self.words_2d(key)
+        self.words(key)
     }
 
     /// The in-pixel offset as digit words.
     pub fn get_pixel_2d_words(&mut self) -> [u32; 2] {
-        self.words_2d(PIXEL_KEY)
+        self.words(PIXEL_KEY)
     }
 }
 
@@ -252,6 +291,61 @@ mod tests {
         assert_eq!(morton2(0, 1), 2);
         assert_eq!(morton2(3, 5), 0b10_01_11);
         assert_eq!(morton2(u32::MAX, u32::MAX), u64::MAX);
+    }
+
+    #[test]
+    fn the_cached_path_equals_the_definition() {
+        // (spp, resolution): even and odd m, spp not a power of two, more
+        // than 32 index bits (high bits in the seed), m above the table.
+        let configs = [
+            (16u32, [640u32, 360u32]),
+            (1, [7, 5]),
+            (2, [3, 3]),
+            (5, [33, 17]),
+            (8, [1 << 15, 3]),
+            (3, [1 << 16, 1 << 16]),
+            (1 << 12, [64, 64]),
+            (2048, [1, 1]),
+        ];
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        for (spp, res) in configs {
+            for r in [
+                Randomize::None,
+                Randomize::Xor { seed: 3 },
+                Randomize::Owen { seed: 4 },
+                Randomize::FastOwen { seed: 5 },
+            ] {
+                let Ok(mut s) = ZSobolSampler::new(spp, res, r, 11) else {
+                    assert!(r == Randomize::None);
+                    continue;
+                };
+                for visit in 0..120u32 {
+                    state = mix64(state.wrapping_add(u64::from(visit)));
+                    // Runs of samples of one pixel, and jumps between pixels.
+                    let pixel = [
+                        (state as u32) % (res[0] + 3),
+                        ((state >> 20) as u32) % res[1],
+                    ];
+                    let start = if visit % 3 == 0 {
+                        1020
+                    } else {
+                        (state >> 50) as u32 % 4
+                    };
+                    for k in 0..(1 + (state >> 40) as u32 % 4) {
+                        s.start_pixel_sample(pixel, (state >> 8) as u32 % spp + k, start);
+                        assert_eq!(s.get_pixel_2d_words(), s.direct_words::<2>(PIXEL_KEY));
+                        for _ in 0..4 {
+                            let key = u64::from(s.dimension);
+                            let want1 = s.direct_words::<1>(key);
+                            assert_eq!([s.get_1d_word()], want1, "{spp} {res:?} {r:?}");
+                            let key = u64::from(s.dimension);
+                            let want2 = s.direct_words::<2>(key);
+                            assert_eq!(s.get_2d_words(), want2, "{spp} {res:?} {r:?}");
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]

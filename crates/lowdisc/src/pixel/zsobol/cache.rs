@@ -1,0 +1,208 @@
+//! The fast path of [`super::ZSobolSampler`]: the same values as
+//! [`super::ZSobolSampler::sample_index`] and its randomizer, with the
+//! hashing that does not change from value to value done once.
+//!
+//! * **Per dimension key** (the same for every pixel): the hash of the seed
+//!   and the key, the level hash of every base-4 digit and the key of the
+//!   odd low bit's flip.
+//! * **Per dimension key and pixel**: the digits at or above the sample bits
+//!   (shift `>= m`) depend only on the pixel's Morton code, so their
+//!   permuted value, its Sobol words (the Sobol point is linear over GF(2)
+//!   in the index bits, so the words of `upper | lower` are the XOR of the
+//!   words of both parts) and the randomizer seeds (which depend on the
+//!   index bits above 31, all among these digits as `m <= 32`) are kept
+//!   until the pixel changes. A renderer visits the samples of a pixel one
+//!   after another, so this is computed once per pixel and key.
+//! * **Per value**: only the `ceil(m / 2)` sample digits (one bit mix each),
+//!   a table lookup of the Sobol words of the low bits and the scramble.
+//!
+//! Keys `0..CACHED_KEYS` and the pixel key are cached; any other key takes
+//! the direct path.
+
+use alloc::vec::Vec;
+
+use super::{BASE4_PERMUTATIONS, LOW_BIT_SALT, PIXEL_KEY};
+use crate::hash::{bounded, hash_words, mix64};
+use crate::scramble::dimension_seed;
+use crate::sobol::sample;
+use crate::{Randomize, pixel};
+
+/// Dimension keys below this are cached (slot `1 + key`; slot 0 is the
+/// pixel key).
+const CACHED_KEYS: u64 = 1024;
+/// Sample bits up to which the Sobol words of the low index bits are tabled.
+const LOWER_TABLE_BITS: u32 = 10;
+
+/// The sampler constants the fast path needs.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Layout {
+    /// The sampler seed.
+    pub seed: u64,
+    /// The randomization (its seed is combined with `seed`).
+    pub randomize: Randomize,
+    /// `m`: sample bits of the index.
+    pub log2_spp: u32,
+    /// Base-4 digits of the index (above the odd low bit, if any).
+    pub base4_digits: u32,
+}
+
+/// What is known about one dimension key.
+#[derive(Debug, Clone)]
+struct Entry {
+    /// Key of the odd low bit's flip.
+    low_key: u64,
+    /// Whether the pixel part below is computed (for `code`).
+    valid: bool,
+    /// Morton code of the pixel the pixel part is for.
+    code: u64,
+    /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel digits.
+    upper_words: [u32; 2],
+    /// Whether `seeds` is computed (for `high`).
+    seeded: bool,
+    /// Index bits above 31 the seeds are for.
+    high: u64,
+    /// Per-dimension scramble seeds of Sobol dimensions 0 and 1.
+    seeds: [u32; 2],
+}
+
+/// The caches of one sampler (see the module documentation).
+#[derive(Debug, Clone)]
+pub(super) struct Cache {
+    entries: Vec<Entry>,
+    /// `levels[slot * base4_digits + i]`: the level hash of digit `i`.
+    levels: Vec<u64>,
+    /// Sobol dimensions 0-1 of every `m`-bit index (empty for large `m`).
+    lower_words: Vec<[u32; 2]>,
+}
+
+impl Cache {
+    /// An empty cache for `layout`; tables the low-bit words when `m` is small.
+    pub(super) fn new(layout: &Layout) -> Self {
+        let lower_words = if layout.log2_spp <= LOWER_TABLE_BITS {
+            (0..1u32 << layout.log2_spp)
+                .map(|j| [sample(j, 0), sample(j, 1)])
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Cache {
+            entries: Vec::new(),
+            levels: Vec::new(),
+            lower_words,
+        }
+    }
+
+    /// The `N` (1 or 2) scrambled words of Sobol dimensions `0..N` for
+    /// dimension key `key` at Morton index `morton`, or `None` if `key` is
+    /// not cached.
+    #[inline]
+    pub(super) fn words<const N: usize>(
+        &mut self,
+        layout: &Layout,
+        key: u64,
+        morton: u64,
+    ) -> Option<[u32; N]> {
+        let slot = if key == PIXEL_KEY {
+            0
+        } else if key < CACHED_KEYS {
+            key as usize + 1
+        } else {
+            return None;
+        };
+        if slot >= self.entries.len() {
+            self.grow(layout, slot);
+        }
+        let digits = layout.base4_digits as usize;
+        let levels = &self.levels[slot * digits..(slot + 1) * digits];
+        let entry = &mut self.entries[slot];
+        let m = layout.log2_spp;
+        let code = morton >> m;
+        if !entry.valid || entry.code != code {
+            refresh(entry, levels, layout, key, code);
+        }
+        let lower = lower_digits(entry.low_key, levels, m, morton);
+        let lower_words = match self.lower_words.get(lower as usize) {
+            Some(&w) => w,
+            None => [sample(lower as u32, 0), sample(lower as u32, 1)],
+        };
+        let entry = &self.entries[slot];
+        Some(core::array::from_fn(|d| {
+            let word = entry.upper_words[d] ^ lower_words[d];
+            layout.randomize.apply_dimension_seed(word, entry.seeds[d])
+        }))
+    }
+
+    /// Adds the entries of every slot up to `slot`.
+    #[cold]
+    fn grow(&mut self, layout: &Layout, slot: usize) {
+        let rs = pixel::randomize_seed(layout.randomize);
+        for s in self.entries.len()..=slot {
+            let key = if s == 0 { PIXEL_KEY } else { s as u64 - 1 };
+            let dim_seed = hash_words(&[layout.seed, rs, key]);
+            self.levels
+                .extend((0..u64::from(layout.base4_digits)).map(|i| level(dim_seed, i)));
+            self.entries.push(Entry {
+                low_key: mix64(dim_seed ^ LOW_BIT_SALT),
+                valid: false,
+                code: 0,
+                upper_words: [0; 2],
+                seeded: false,
+                high: 0,
+                seeds: [0; 2],
+            });
+        }
+    }
+}
+
+/// The level hash of digit `i` for a dimension seed (as `sample_index`).
+#[inline]
+pub(super) fn level(dim_seed: u64, i: u64) -> u64 {
+    mix64(dim_seed ^ i.wrapping_mul(0x9e37_79b9_7f4a_7c15))
+}
+
+/// The permuted base-4 digit `i` (at `shift`) of `morton`.
+#[inline(always)]
+fn permuted_digit(level: u64, morton: u64, shift: u32) -> u64 {
+    let digit = (morton >> shift) & 3;
+    let higher = morton.checked_shr(shift + 2).unwrap_or(0);
+    let p = bounded(mix64(level ^ higher), 24) as usize;
+    u64::from(BASE4_PERMUTATIONS[p][digit as usize]) << shift
+}
+
+/// Recomputes the pixel part of `entry` for the pixel with Morton code `code`.
+fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u64) {
+    let m = layout.log2_spp;
+    let odd = m & 1;
+    // `code << m` fits: the index has at most 64 bits.
+    let morton = code << m;
+    let mut upper = 0u64;
+    for (i, &level) in (m.div_ceil(2)..).zip(&levels[m.div_ceil(2) as usize..]) {
+        upper |= permuted_digit(level, morton, 2 * i - odd);
+    }
+    entry.upper_words = [sample(upper as u32, 0), sample(upper as u32, 1)];
+    let high = upper >> 32;
+    if !entry.seeded || entry.high != high {
+        let rs = pixel::randomize_seed(layout.randomize);
+        let h = hash_words(&[layout.seed, rs, key, high]);
+        entry.seeds = [dimension_seed(h, 0), dimension_seed(h, 1)];
+        entry.high = high;
+        entry.seeded = true;
+    }
+    entry.code = code;
+    entry.valid = true;
+}
+
+/// The permuted index bits below `m` (the sample digits and the odd low bit).
+#[inline(always)]
+fn lower_digits(low_key: u64, levels: &[u64], m: u32, morton: u64) -> u64 {
+    let odd = m & 1;
+    let mut lower = 0u64;
+    for (i, &level) in (odd..m.div_ceil(2)).zip(&levels[odd as usize..]) {
+        lower |= permuted_digit(level, morton, 2 * i - odd);
+    }
+    if odd == 1 {
+        let flip = mix64(low_key ^ (morton >> 1)) >> 63;
+        lower |= (morton & 1) ^ flip;
+    }
+    lower
+}
