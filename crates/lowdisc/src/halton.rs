@@ -109,6 +109,9 @@ impl HaltonRandomize {
 pub struct Halton {
     randomize: HaltonRandomize,
     seed: u64,
+    /// `derive_seed(seed, SALT_PERMUTE)` or `derive_seed(seed, SALT_OWEN)`
+    /// as the randomization needs (hashed once, not per value).
+    derived_seed: u64,
     tables: tables::PermutationTables,
 }
 
@@ -126,9 +129,15 @@ impl Halton {
     /// [`HaltonRandomize::None`]. Does not build any permutation table yet.
     pub fn new(randomize: HaltonRandomize, seed: u64) -> Halton {
         let tables = tables::PermutationTables::new(randomize == HaltonRandomize::PermuteDigits);
+        let derived_seed = match randomize {
+            HaltonRandomize::None => 0,
+            HaltonRandomize::PermuteDigits => derive_seed(seed, SALT_PERMUTE),
+            HaltonRandomize::Owen => derive_seed(seed, SALT_OWEN),
+        };
         Halton {
             randomize,
             seed,
+            derived_seed,
             tables,
         }
     }
@@ -195,15 +204,11 @@ impl Halton {
         match self.randomize {
             HaltonRandomize::None => unscrambled(index, base),
             HaltonRandomize::PermuteDigits => {
-                let seed = derive_seed(self.seed, SALT_PERMUTE);
+                let seed = self.derived_seed;
                 self.tables
                     .with_dimension(seed, dim, |tables| permuted(index, base, tables))
             }
-            HaltonRandomize::Owen => owen(
-                index,
-                base,
-                hash2(derive_seed(self.seed, SALT_OWEN), u64::from(dim)),
-            ),
+            HaltonRandomize::Owen => owen(index, base, hash2(self.derived_seed, u64::from(dim))),
         }
     }
 }

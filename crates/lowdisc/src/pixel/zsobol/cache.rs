@@ -13,8 +13,12 @@
 //!   index bits above 31, all among these digits as `m <= 32`) are kept
 //!   until the pixel changes. A renderer visits the samples of a pixel one
 //!   after another, so this is computed once per pixel and key.
-//! * **Per value**: only the `ceil(m / 2)` sample digits (one bit mix each),
-//!   a table lookup of the Sobol words of the low bits and the scramble.
+//!   The permutations of the two highest sample digits are chosen by hashes
+//!   of the pixel digits and at most one sample digit, so the 1 + 4 of them
+//!   are kept too.
+//! * **Per value**: the sample digits below those two (one bit mix each;
+//!   none for `m <= 5`), the odd low bit's flip, a table lookup of the Sobol
+//!   words of the low bits and the scramble.
 //!
 //! Keys `0..CACHED_KEYS` and the pixel key are cached; any other key takes
 //! the direct path.
@@ -57,6 +61,10 @@ struct Entry {
     code: u64,
     /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel digits.
     upper_words: [u32; 2],
+    /// Packed permutations (see [`PACKED_PERMUTATIONS`]) of the highest
+    /// sample digit (entry 0) and of the next one after each value `v` of
+    /// the highest (entry `1 + v`), when those digits exist.
+    tree: [u8; 5],
     /// Whether `seeds` is computed (for `high`).
     seeded: bool,
     /// Index bits above 31 the seeds are for.
@@ -120,7 +128,7 @@ impl Cache {
         if !entry.valid || entry.code != code {
             refresh(entry, levels, layout, key, code);
         }
-        let lower = lower_digits(entry.low_key, levels, m, morton);
+        let lower = lower_digits(entry, levels, m, morton);
         let lower_words = match self.lower_words.get(lower as usize) {
             Some(&w) => w,
             None => [sample(lower as u32, 0), sample(lower as u32, 1)],
@@ -146,6 +154,7 @@ impl Cache {
                 valid: false,
                 code: 0,
                 upper_words: [0; 2],
+                tree: [0; 5],
                 seeded: false,
                 high: 0,
                 seeds: [0; 2],
@@ -160,13 +169,38 @@ pub(super) fn level(dim_seed: u64, i: u64) -> u64 {
     mix64(dim_seed ^ i.wrapping_mul(0x9e37_79b9_7f4a_7c15))
 }
 
+/// [`BASE4_PERMUTATIONS`] packed two bits per image: permutation `p` maps
+/// digit `d` to `(PACKED_PERMUTATIONS[p] >> 2d) & 3`.
+const PACKED_PERMUTATIONS: [u8; 24] = {
+    let mut out = [0u8; 24];
+    let mut p = 0;
+    while p < 24 {
+        let q = BASE4_PERMUTATIONS[p];
+        out[p] = q[0] | (q[1] << 2) | (q[2] << 4) | (q[3] << 6);
+        p += 1;
+    }
+    out
+};
+
+/// The packed permutation chosen for a digit with level hash `level` and
+/// higher digits `higher`.
+#[inline(always)]
+fn packed_permutation(level: u64, higher: u64) -> u8 {
+    PACKED_PERMUTATIONS[bounded(mix64(level ^ higher), 24) as usize]
+}
+
+/// Applies a packed permutation to the digit of `morton` at `shift`.
+#[inline(always)]
+fn apply_packed(packed: u8, morton: u64, shift: u32) -> u64 {
+    let digit = (morton >> shift) & 3;
+    u64::from((packed >> (2 * digit)) & 3) << shift
+}
+
 /// The permuted base-4 digit `i` (at `shift`) of `morton`.
 #[inline(always)]
 fn permuted_digit(level: u64, morton: u64, shift: u32) -> u64 {
-    let digit = (morton >> shift) & 3;
     let higher = morton.checked_shr(shift + 2).unwrap_or(0);
-    let p = bounded(mix64(level ^ higher), 24) as usize;
-    u64::from(BASE4_PERMUTATIONS[p][digit as usize]) << shift
+    apply_packed(packed_permutation(level, higher), morton, shift)
 }
 
 /// Recomputes the pixel part of `entry` for the pixel with Morton code `code`.
@@ -180,6 +214,16 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
         upper |= permuted_digit(level, morton, 2 * i - odd);
     }
     entry.upper_words = [sample(upper as u32, 0), sample(upper as u32, 1)];
+    // The two highest sample digits, at shifts m - 2 and m - 4.
+    let (top, sample_digits) = (m.div_ceil(2) as usize, m / 2);
+    if sample_digits >= 1 {
+        entry.tree[0] = packed_permutation(levels[top - 1], code);
+    }
+    if sample_digits >= 2 {
+        for v in 0..4u64 {
+            entry.tree[1 + v as usize] = packed_permutation(levels[top - 2], (code << 2) | v);
+        }
+    }
     let high = upper >> 32;
     if !entry.seeded || entry.high != high {
         let rs = pixel::randomize_seed(layout.randomize);
@@ -194,14 +238,24 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
 
 /// The permuted index bits below `m` (the sample digits and the odd low bit).
 #[inline(always)]
-fn lower_digits(low_key: u64, levels: &[u64], m: u32, morton: u64) -> u64 {
+fn lower_digits(entry: &Entry, levels: &[u64], m: u32, morton: u64) -> u64 {
     let odd = m & 1;
+    let sample_digits = m / 2;
     let mut lower = 0u64;
-    for (i, &level) in (odd..m.div_ceil(2)).zip(&levels[odd as usize..]) {
+    if sample_digits >= 1 {
+        lower |= apply_packed(entry.tree[0], morton, m - 2);
+    }
+    if sample_digits >= 2 {
+        let top = (morton >> (m - 2)) & 3;
+        lower |= apply_packed(entry.tree[1 + top as usize], morton, m - 4);
+    }
+    // The digits below those two (index `i` at shift `2i - odd`).
+    let rest = sample_digits.saturating_sub(2) + odd;
+    for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
         lower |= permuted_digit(level, morton, 2 * i - odd);
     }
     if odd == 1 {
-        let flip = mix64(low_key ^ (morton >> 1)) >> 63;
+        let flip = mix64(entry.low_key ^ (morton >> 1)) >> 63;
         lower |= (morton & 1) ^ flip;
     }
     lower
