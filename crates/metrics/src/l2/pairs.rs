@@ -19,8 +19,10 @@
 //! Instruction set: each chunk is run through `pulp::Arch::dispatch`, which detects
 //! x86-64-v3 (AVX2, FMA, …) at run time and runs a second build of the inlined kernel
 //! compiled for it (four f64 per vector instead of two); other machines run the
-//! baseline build of the same code. Both builds do the same IEEE operations in the same
-//! order (no fused multiply-add is introduced), so both give the same bits.
+//! baseline build of the same code. The x86-64-v3 build also fuses the multiply-adds of
+//! WD and MD (one rounding fewer), so those two can differ in their last bits between
+//! processors with and without FMA; on one machine the value never depends on the
+//! number of threads.
 
 use rayon::prelude::*;
 
@@ -35,63 +37,76 @@ const ROWS_PER_CHUNK: usize = 32;
 type Block = [f64; LANES];
 
 /// The per-coordinate factor of one method, in the form the kernel evaluates:
-/// `factor(a, ca, b, cb)` where `a`, `ca` are the row point's value and constant and
-/// `b`, `cb` the column point's (see [`Prepared`] for what each method stores).
+/// `factor(a, ca, b, cb)` where `a`, `ca` are two numbers stored for the row point and
+/// `b`, `cb` two for the column point (see [`Prepared`] for what each method stores).
+/// `FUSED` says whether multiply-adds may be fused (only where the processor has FMA).
 trait Kernel {
     /// The factor.
-    fn factor(a: f64, ca: f64, b: f64, cb: f64) -> f64;
+    fn factor<const FUSED: bool>(a: f64, ca: f64, b: f64, cb: f64) -> f64;
+}
+
+/// `x·y + z`, with one rounding if `FUSED`, else two.
+#[inline(always)]
+fn mul_add<const FUSED: bool>(x: f64, y: f64, z: f64) -> f64 {
+    if FUSED { x.mul_add(y, z) } else { x * y + z }
+}
+
+/// The smaller of two numbers, compared with `<` so that it is one `minpd`.
+#[inline(always)]
+fn min(x: f64, y: f64) -> f64 {
+    if x < y { x } else { y }
 }
 
 /// L2-star: `1 − max(x, y) = min(1 − x, 1 − y)` exactly (rounding `1 − ·` is monotone),
-/// with the values stored as `1 − x`. Compared with `<` so that it is one `minpd`.
+/// with `a = 1 − x`, `b = 1 − y`.
 struct Star;
 impl Kernel for Star {
     #[inline(always)]
-    fn factor(a: f64, _: f64, b: f64, _: f64) -> f64 {
-        if a < b { a } else { b }
+    fn factor<const FUSED: bool>(a: f64, _: f64, b: f64, _: f64) -> f64 {
+        min(a, b)
     }
 }
 
-/// Centered, on halved values `x/2` (exact): `K = (1 + z_x/2) + z_y/2 − |x/2 − y/2|`,
-/// row constant `1 + z/2`, column constant `z/2`.
+/// Centered: `K = c_x + c_y − |x − y|/2` with `c = 1 + z/2`, is the smaller of
+/// `(c_x − x/2) + (c_y + y/2)` and `(c_x + x/2) + (c_y − y/2)`: two additions and a
+/// minimum, no absolute value.
 struct Centered;
 impl Kernel for Centered {
     #[inline(always)]
-    fn factor(a: f64, ca: f64, b: f64, cb: f64) -> f64 {
-        (ca + cb) - (a - b).abs()
+    fn factor<const FUSED: bool>(a: f64, ca: f64, b: f64, cb: f64) -> f64 {
+        min(a + b, ca + cb)
     }
 }
 
-/// Wrap-around: `K = 3/2 − t + t²` with `t = |x − y|`, no constants.
+/// Wrap-around: `K = 3/2 − t + t² = t (t − 1) + 3/2` with `t = |x − y|`.
 struct WrapAround;
 impl Kernel for WrapAround {
     #[inline(always)]
-    fn factor(a: f64, _: f64, b: f64, _: f64) -> f64 {
+    fn factor<const FUSED: bool>(a: f64, _: f64, b: f64, _: f64) -> f64 {
         let t = (a - b).abs();
-        (1.5 - t) + t * t
+        mul_add::<FUSED>(t, t - 1.0, 1.5)
     }
 }
 
-/// Mixture, doubled: `2K = (15/4 − z_x/2) + (−z_y/2) + t (t − 3/2)` with
-/// `t = |x − y|`, row constant `15/4 − z/2`, column constant `−z/2`; the sum is rescaled
-/// by `2^{−d}`, exact as long as `2^d` stays far from overflow, so it is used for
-/// `d <= MAX_DOUBLED_DIMS` and [`Mixture`] beyond.
+/// Mixture, doubled: `2K = t (t − 3/2) + ((15/4 − z_x/2) + (−z_y/2))` with
+/// `t = |x − y|`; the sum is rescaled by `2^{−d}`, exact as long as `3.75^d` stays far
+/// from overflow, so it is used for `d <= MAX_DOUBLED_DIMS` and [`Mixture`] beyond.
 struct MixtureDoubled;
 impl Kernel for MixtureDoubled {
     #[inline(always)]
-    fn factor(a: f64, ca: f64, b: f64, cb: f64) -> f64 {
+    fn factor<const FUSED: bool>(a: f64, ca: f64, b: f64, cb: f64) -> f64 {
         let t = (a - b).abs();
-        (ca + cb) + t * (t - 1.5)
+        mul_add::<FUSED>(t, t - 1.5, ca + cb)
     }
 }
 
-/// Mixture, plain: `K = (15/8 − z_x/4) + (−z_y/4) + t (t/2 − 3/4)`.
+/// Mixture, plain: `K = t (t/2 − 3/4) + ((15/8 − z_x/4) + (−z_y/4))`.
 struct Mixture;
 impl Kernel for Mixture {
     #[inline(always)]
-    fn factor(a: f64, ca: f64, b: f64, cb: f64) -> f64 {
+    fn factor<const FUSED: bool>(a: f64, ca: f64, b: f64, cb: f64) -> f64 {
         let t = (a - b).abs();
-        (ca + cb) + t * (0.5 * t - 0.75)
+        mul_add::<FUSED>(t, 0.5 * t - 0.75, ca + cb)
     }
 }
 
@@ -100,15 +115,15 @@ const MAX_DOUBLED_DIMS: usize = 256;
 
 /// The points of one method, prepared for its kernel.
 ///
-/// | method | value | row constant | column constant | scale |
-/// |---|---|---|---|---|
-/// | L2-star | `1 − x` | – | – | 1 |
-/// | CD | `x/2` | `1 + z/2` | `z/2` | 1 |
-/// | WD | `x` | – | – | 1 |
-/// | MD, `d <= 256` | `x` | `15/4 − z/2` | `−z/2` | `2^{−d}` |
-/// | MD, `d > 256` | `x` | `15/8 − z/4` | `−z/4` | 1 |
+/// | method | row `a` | row `ca` | column `b` | column `cb` | scale |
+/// |---|---|---|---|---|---|
+/// | L2-star | `1 − x` | – | `1 − x` | – | 1 |
+/// | CD | `c − x/2` | `c + x/2` | `c' + x/2` | `c' − x/2` | 1 |
+/// | WD | `x` | – | `x` | – | 1 |
+/// | MD, `d <= 256` | `x` | `15/4 − z/2` | `x` | `−z/2` | `2^{−d}` |
+/// | MD, `d > 256` | `x` | `15/8 − z/4` | `x` | `−z/4` | 1 |
 ///
-/// with `z = |x − 1/2|`.
+/// with `z = |x − 1/2|`, `c = 1 + z/2`, `c' = z/2` (the 1 is counted once, on the row).
 struct Prepared {
     n: usize,
     d: usize,
@@ -137,18 +152,19 @@ impl Prepared {
         for (k, col) in cols.iter().enumerate() {
             for (i, &x) in col.iter().take(n).enumerate() {
                 let z = (x - 0.5).abs();
-                let (value, row_c, col_c) = match method {
-                    L2Method::L2Star => (1.0 - x, 0.0, 0.0),
-                    L2Method::Centered => (0.5 * x, 1.0 + 0.5 * z, 0.5 * z),
-                    L2Method::WrapAround => (x, 0.0, 0.0),
-                    L2Method::Mixture if d <= MAX_DOUBLED_DIMS => (x, 3.75 - 0.5 * z, -0.5 * z),
-                    L2Method::Mixture => (x, 1.875 - 0.25 * z, -0.25 * z),
+                let (h, c, c2) = (0.5 * x, 1.0 + 0.5 * z, 0.5 * z);
+                let (a, ca, b, cb) = match method {
+                    L2Method::L2Star => (1.0 - x, 0.0, 1.0 - x, 0.0),
+                    L2Method::Centered => (c - h, c + h, c2 + h, c2 - h),
+                    L2Method::WrapAround => (x, 0.0, x, 0.0),
+                    L2Method::Mixture if d <= MAX_DOUBLED_DIMS => (x, 3.75 - 0.5 * z, x, -0.5 * z),
+                    L2Method::Mixture => (x, 1.875 - 0.25 * z, x, -0.25 * z),
                 };
-                p.row_values[i * d + k] = value;
-                p.row_constants[i * d + k] = row_c;
-                let (b, l) = (i / LANES, i % LANES);
-                p.values[b * d + k][l] = value;
-                p.constants[b * d + k][l] = col_c;
+                p.row_values[i * d + k] = a;
+                p.row_constants[i * d + k] = ca;
+                let (blk, l) = (i / LANES, i % LANES);
+                p.values[blk * d + k][l] = b;
+                p.constants[blk * d + k][l] = cb;
             }
         }
         p
@@ -156,7 +172,7 @@ impl Prepared {
 
     /// Σ over `j > i` of the products of row `i` with point `j`.
     #[inline(always)]
-    fn row_sum<K: Kernel>(&self, i: usize) -> f64 {
+    fn row_sum<K: Kernel, const FUSED: bool>(&self, i: usize) -> f64 {
         let (n, d) = (self.n, self.d);
         let a = &self.row_values[i * d..(i + 1) * d];
         let ca = &self.row_constants[i * d..(i + 1) * d];
@@ -169,7 +185,7 @@ impl Prepared {
             let mut acc = [1.0f64; LANES];
             for (((&ak, &ck), v), c) in a.iter().zip(ca).zip(vb).zip(cb) {
                 for l in 0..LANES {
-                    acc[l] *= K::factor(ak, ck, v[l], c[l]);
+                    acc[l] *= K::factor::<FUSED>(ak, ck, v[l], c[l]);
                 }
             }
             let j0 = b * LANES;
@@ -194,7 +210,7 @@ impl Prepared {
         let (b, l) = (i / LANES, i % LANES);
         (0..d)
             .map(|k| {
-                K::factor(
+                K::factor::<false>(
                     self.row_values[i * d + k],
                     self.row_constants[i * d + k],
                     self.values[b * d + k][l],
@@ -215,14 +231,25 @@ impl Prepared {
     fn pair_sum<K: Kernel + Sync>(&self) -> f64 {
         let chunks = self.n.div_ceil(ROWS_PER_CHUNK);
         let arch = pulp::Arch::new();
+        let fused = has_fma(arch);
         let sums: Vec<f64> = (0..chunks)
             .into_par_iter()
-            .map(|c| {
-                arch.dispatch(Chunk::<K> {
-                    points: self,
-                    chunk: c,
-                    kernel: std::marker::PhantomData,
-                })
+            .map(|chunk| {
+                let points = self;
+                let kernel = std::marker::PhantomData::<K>;
+                if fused {
+                    arch.dispatch(Chunk::<K, true> {
+                        points,
+                        chunk,
+                        kernel,
+                    })
+                } else {
+                    arch.dispatch(Chunk::<K, false> {
+                        points,
+                        chunk,
+                        kernel,
+                    })
+                }
             })
             .collect();
         let off_diagonal = compensated_sum(sums);
@@ -231,14 +258,26 @@ impl Prepared {
     }
 }
 
+/// Whether pulp chose an instruction set with fused multiply-add (x86-64-v3 has FMA).
+#[cfg(target_arch = "x86_64")]
+fn has_fma(arch: pulp::Arch) -> bool {
+    !matches!(arch, pulp::Arch::Scalar)
+}
+
+/// Whether pulp chose an instruction set with fused multiply-add (assumed not, here).
+#[cfg(not(target_arch = "x86_64"))]
+fn has_fma(_: pulp::Arch) -> bool {
+    false
+}
+
 /// One chunk of rows, as an operation that pulp compiles for each instruction set.
-struct Chunk<'a, K> {
+struct Chunk<'a, K, const FUSED: bool> {
     points: &'a Prepared,
     chunk: usize,
     kernel: std::marker::PhantomData<K>,
 }
 
-impl<K: Kernel> pulp::WithSimd for Chunk<'_, K> {
+impl<K: Kernel, const FUSED: bool> pulp::WithSimd for Chunk<'_, K, FUSED> {
     type Output = f64;
 
     #[inline(always)]
@@ -246,7 +285,7 @@ impl<K: Kernel> pulp::WithSimd for Chunk<'_, K> {
         let p = self.points;
         let mut sum = Compensated::default();
         for i in p.chunk_rows(self.chunk) {
-            sum.add(p.row_sum::<K>(i));
+            sum.add(p.row_sum::<K, FUSED>(i));
         }
         sum.value()
     }
