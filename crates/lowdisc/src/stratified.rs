@@ -136,33 +136,61 @@ pub fn stratum_f32(cell: u32, count: u32, u: f32) -> f32 {
 /// the result falls in `0..n` ("cycle walking", which keeps it a bijection
 /// of `0..n`; fewer than two steps on average). Returns 0 when `n <= 1`.
 pub fn permutation_element(i: u32, n: u32, key: u64) -> u32 {
-    if n <= 1 {
-        return 0;
-    }
-    let bits = 32 - (n - 1).leading_zeros();
-    let mask = if bits == 32 {
-        u32::MAX
-    } else {
-        (1u32 << bits) - 1
-    };
-    let shift = bits / 2 + 1;
-    let keys: [u64; 3] = [
-        mix64(key),
-        mix64(key ^ 0x5851_f42d_4c95_7f2d),
-        mix64(key ^ 0x1405_7b7e_f767_814f),
-    ];
-    let mut x = i % n;
-    loop {
-        for &k in &keys {
-            x ^= k as u32 & mask;
-            x = x.wrapping_mul((k >> 32) as u32 | 1) & mask;
-            x ^= x >> shift;
-            x = x.wrapping_add((k >> 40) as u32) & mask;
-            x = x.wrapping_mul(0x2c1b_3c6d) & mask;
-            x ^= x >> shift.saturating_sub(1).max(1);
+    KeyedPermutation::new(n, key).element(i)
+}
+
+/// The permutation of [`permutation_element`] for one `(n, key)`, with the
+/// key's hashing done once: `KeyedPermutation::new(n, key).element(i)`
+/// equals `permutation_element(i, n, key)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct KeyedPermutation {
+    n: u32,
+    mask: u32,
+    shift: u32,
+    keys: [u64; 3],
+}
+
+impl KeyedPermutation {
+    /// The permutation of `0..n` chosen by `key`.
+    pub fn new(n: u32, key: u64) -> Self {
+        let bits = 32 - n.saturating_sub(1).leading_zeros();
+        let mask = if bits == 32 {
+            u32::MAX
+        } else {
+            (1u32 << bits) - 1
+        };
+        KeyedPermutation {
+            n,
+            mask,
+            shift: bits / 2 + 1,
+            keys: [
+                mix64(key),
+                mix64(key ^ 0x5851_f42d_4c95_7f2d),
+                mix64(key ^ 0x1405_7b7e_f767_814f),
+            ],
         }
-        if x < n {
-            return x;
+    }
+
+    /// Element `i mod n` (0 when `n <= 1`).
+    #[inline]
+    pub fn element(&self, i: u32) -> u32 {
+        let (n, mask, shift) = (self.n, self.mask, self.shift);
+        if n <= 1 {
+            return 0;
+        }
+        let mut x = i % n;
+        loop {
+            for &k in &self.keys {
+                x ^= k as u32 & mask;
+                x = x.wrapping_mul((k >> 32) as u32 | 1) & mask;
+                x ^= x >> shift;
+                x = x.wrapping_add((k >> 40) as u32) & mask;
+                x = x.wrapping_mul(0x2c1b_3c6d) & mask;
+                x ^= x >> shift.saturating_sub(1).max(1);
+            }
+            if x < n {
+                return x;
+            }
         }
     }
 }

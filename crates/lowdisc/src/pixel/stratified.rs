@@ -19,12 +19,21 @@
 //!
 //! Every value is a pure function of (seed, pixel, sample index, dimension).
 //! Stratum membership is exact in `f32` (at most `2^24` samples per pixel).
+//!
+//! Speed: the key of a dimension and its permutation depend on the pixel
+//! and the round only, so for tags below `CACHED_TAGS` (and the pixel tag)
+//! they are kept while those stay the same (the seed and pixel part of the
+//! hash is absorbed once per pixel); a value then costs one bit mix for its
+//! jitter and the permutation's rounds. The values are unchanged (a test
+//! compares with the definition).
+
+use alloc::vec::Vec;
 
 use super::PixelSampler;
 use crate::Error;
-use crate::hash::{hash_words, mix64};
+use crate::hash::{WordHasher, hash_words, mix64};
 use crate::scramble::derive_seed;
-use crate::stratified::{grid_shape, permutation_element, stratum_f32};
+use crate::stratified::{KeyedPermutation, grid_shape, stratum_f32};
 
 /// Salt separating the stratified sampler from other uses of a seed.
 const SALT: u64 = 0x5354_5241_5449_4659; // "STRATIFY"
@@ -32,6 +41,29 @@ const SALT: u64 = 0x5354_5241_5449_4659; // "STRATIFY"
 const PIXEL_TAG: u64 = 1 << 32;
 /// Largest supported samples per pixel (strata must be distinct in `f32`).
 const MAX_SPP: u32 = 1 << 24;
+/// Dimension tags below this are cached (slot `1 + tag`; slot 0 is the
+/// pixel tag).
+const CACHED_TAGS: u64 = 1024;
+
+/// The key and permutation of one tag for one (pixel, round).
+#[derive(Debug, Clone)]
+struct Entry {
+    /// Whether the fields below are for `pixel` and `round`.
+    valid: bool,
+    pixel: [u32; 2],
+    round: u32,
+    key: u64,
+    permutation: KeyedPermutation,
+}
+
+/// Keys and permutations reused between values (never changes a value).
+#[derive(Debug, Clone, Default)]
+struct Cache {
+    /// The (pixel, round) `prefix` is for, and the hash state after the
+    /// seed, the pixel and the round.
+    prefix: Option<([u32; 2], u32, WordHasher)>,
+    entries: Vec<Entry>,
+}
 
 /// Stratified, jittered samples with per-pixel, per-dimension shuffling.
 #[derive(Debug, Clone)]
@@ -42,6 +74,7 @@ pub struct StratifiedSampler {
     pixel: [u32; 2],
     sample_index: u32,
     dimension: u32,
+    cache: Cache,
 }
 
 impl StratifiedSampler {
@@ -63,6 +96,7 @@ impl StratifiedSampler {
             pixel: [0, 0],
             sample_index: 0,
             dimension: 0,
+            cache: Cache::default(),
         })
     }
 
@@ -85,19 +119,73 @@ impl StratifiedSampler {
         (key, self.sample_index % self.spp)
     }
 
+    /// [`StratifiedSampler::key`] and the permutation it keys, through the
+    /// cache.
+    fn keyed(&mut self, tag: u64) -> (u64, KeyedPermutation, u32) {
+        let (spp, pixel) = (self.spp, self.pixel);
+        let (round, position) = (self.sample_index / spp, self.sample_index % spp);
+        let slot = match tag {
+            PIXEL_TAG => 0,
+            t if t < CACHED_TAGS => t as usize + 1,
+            _ => {
+                let (key, position) = self.key(tag);
+                return (key, KeyedPermutation::new(spp, key), position);
+            }
+        };
+        let cache = &mut self.cache;
+        if let Some(e) = cache.entries.get(slot)
+            && e.valid
+            && e.pixel == pixel
+            && e.round == round
+        {
+            return (e.key, e.permutation, position);
+        }
+        let prefix = match cache.prefix {
+            Some((p, r, h)) if p == pixel && r == round => h,
+            _ => {
+                let [x, y] = pixel.map(u64::from);
+                let h = WordHasher::new(5)
+                    .push(self.seed)
+                    .push(x)
+                    .push(y)
+                    .push(u64::from(round));
+                cache.prefix = Some((pixel, round, h));
+                h
+            }
+        };
+        let key = prefix.push(tag).finish();
+        let permutation = KeyedPermutation::new(spp, key);
+        let entry = Entry {
+            valid: true,
+            pixel,
+            round,
+            key,
+            permutation,
+        };
+        while cache.entries.len() <= slot {
+            // Placeholders, invalid until their own tag is asked for.
+            cache.entries.push(Entry {
+                valid: false,
+                ..entry.clone()
+            });
+        }
+        cache.entries[slot] = entry;
+        (key, permutation, position)
+    }
+
     /// The stratified 1-D value of dimension tag `tag`.
-    fn value_1d(&self, tag: u64) -> f32 {
-        let (key, position) = self.key(tag);
-        let stratum = permutation_element(position, self.spp, key);
+    fn value_1d(&mut self, tag: u64) -> f32 {
+        let (key, permutation, position) = self.keyed(tag);
+        let stratum = permutation.element(position);
         let jitter = mix64(key ^ u64::from(position));
         stratum_f32(stratum, self.spp, unit_f32(jitter >> 40))
     }
 
     /// The stratified 2-D value of dimension tag `tag`.
-    fn value_2d(&self, tag: u64) -> [f32; 2] {
-        let (key, position) = self.key(tag);
+    fn value_2d(&mut self, tag: u64) -> [f32; 2] {
+        let (key, permutation, position) = self.keyed(tag);
         let (nx, ny) = self.grid;
-        let cell = permutation_element(position, self.spp, key);
+        let cell = permutation.element(position);
         let jitter = mix64(key ^ u64::from(position));
         [
             stratum_f32(cell % nx, nx, unit_f32(jitter >> 40)),
@@ -142,7 +230,48 @@ impl PixelSampler for StratifiedSampler {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::stratified::permutation_element;
     use alloc::vec::Vec;
+
+    #[test]
+    fn the_cached_path_equals_the_definition() {
+        let mut state = 5u64;
+        for spp in [1u32, 6, 16] {
+            let mut s = StratifiedSampler::new(spp, 8).unwrap();
+            for visit in 0..80u32 {
+                state = mix64(state.wrapping_add(u64::from(visit)));
+                let pixel = [(state % 3) as u32, (state >> 8) as u32 % 2];
+                let start = if visit % 3 == 0 { 1020 } else { 0 };
+                for k in 0..3 {
+                    s.start_pixel_sample(pixel, (state >> 20) as u32 % 40 + k, start);
+                    // The definition, from the uncached key.
+                    let jitter = |s: &StratifiedSampler, tag: u64| {
+                        let (key, position) = s.key(tag);
+                        let p = permutation_element(position, spp, key);
+                        (p, mix64(key ^ u64::from(position)))
+                    };
+                    let (nx, ny) = s.grid;
+                    let (cell, j) = jitter(&s, PIXEL_TAG);
+                    let want = [
+                        stratum_f32(cell % nx, nx, unit_f32(j >> 40)),
+                        stratum_f32(cell / nx, ny, unit_f32(j & 0xff_ffff)),
+                    ];
+                    assert_eq!(s.get_pixel_2d(), want);
+                    for _ in 0..4 {
+                        let (stratum, j) = jitter(&s, u64::from(s.dimension));
+                        let want = stratum_f32(stratum, spp, unit_f32(j >> 40));
+                        assert_eq!(s.get_1d(), want);
+                        let (cell, j) = jitter(&s, u64::from(s.dimension));
+                        let want = [
+                            stratum_f32(cell % nx, nx, unit_f32(j >> 40)),
+                            stratum_f32(cell / nx, ny, unit_f32(j & 0xff_ffff)),
+                        ];
+                        assert_eq!(s.get_2d(), want);
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn bad_sample_counts_are_errors() {
