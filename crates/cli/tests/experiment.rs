@@ -34,6 +34,7 @@ fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
         "report.md",
         "report.html",
         "results.json",
+        "reference.exr",
         "reference.png",
         "reference_crop.png",
         "convergence.png",
@@ -50,6 +51,14 @@ fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
     }
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert!(md.contains("| paper-repro"), "{md}");
+    // The linear EXR of seed 0 against the reference EXR gives the relMSE
+    // that results.json reports for that run.
+    let reference = lowdisc_image::read_image(out.join("reference.exr")).unwrap();
+    let seed0 = lowdisc_image::read_image(out.join("independent.exr")).unwrap();
+    let relmse = lowdisc_image::error_metrics(&seed0, &reference)
+        .unwrap()
+        .linear
+        .relmse;
     assert!(md.contains("relMSE / sobol"), "{md}");
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert!(html.contains("<img src=\"convergence.png\""), "{html}");
@@ -100,6 +109,8 @@ fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
     assert_eq!(sobol["name"], "sobol");
     assert_eq!(sobol["relmse_ratio_to_sobol"], 1.0);
     let indep = &samplers[2];
+    let run0 = indep["runs"][0]["linear"]["relmse"].as_f64().unwrap();
+    assert!((relmse - run0).abs() <= 1e-12 * run0, "{relmse} vs {run0}");
     let expected =
         indep["relmse"]["mean"].as_f64().unwrap() / sobol["relmse"]["mean"].as_f64().unwrap();
     assert!((indep["relmse_ratio_to_sobol"].as_f64().unwrap() - expected).abs() < 1e-12 * expected);

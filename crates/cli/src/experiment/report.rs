@@ -1,4 +1,4 @@
-//! Writing the report folder: images (PNG), plots, `results.json`,
+//! Writing the report folder: images (linear EXR and sRGB PNG), plots, `results.json`,
 //! `report.md` and `report.html` (the same content, HTML with `<img>` tags).
 //! Every file goes through a temporary file and a rename.
 
@@ -7,7 +7,9 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
-use lowdisc_image::{Normalization, PixelError, RgbImage, crop, upscale_nearest, write_png};
+use lowdisc_image::{
+    Normalization, PixelError, RgbImage, crop, upscale_nearest, write_exr, write_png,
+};
 use lowdisc_plot::{LineChart, ScatterGrid, Series};
 use serde_json::json;
 
@@ -30,7 +32,9 @@ fn crop_window(w: usize, h: usize) -> [usize; 4] {
     [(w - cw) / 2, (h - ch) / 2, cw, ch]
 }
 
+/// `stem.exr` (linear radiance), `stem.png` (sRGB) and `stem_crop.png`.
 fn save_with_crop(dir: &Path, stem: &str, image: &RgbImage) -> Result<()> {
+    write_exr(dir.join(format!("{stem}.exr")), image)?;
     write_png(dir.join(format!("{stem}.png")), image, 1.0)?;
     let [x, y, w, h] = crop_window(image.width(), image.height());
     let c = upscale_nearest(&crop(image, x, y, w, h)?, CROP_ZOOM)?;
