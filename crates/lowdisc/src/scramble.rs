@@ -65,13 +65,24 @@ impl Randomize {
     /// `self.apply_dimension_seed(word, dimension_seed(seed, dim))` (the
     /// seed inside `self` is ignored). Lets callers that scramble many words
     /// of one dimension hash the seed once.
-    #[inline]
+    #[inline(always)]
     pub fn apply_dimension_seed(self, word: u32, dimension_seed: u32) -> u32 {
         match self {
             Randomize::None => word,
             Randomize::Xor { .. } => word ^ dimension_seed,
             Randomize::Owen { .. } => owen_scramble(word, dimension_seed),
             Randomize::FastOwen { .. } => fast_owen_scramble(word, dimension_seed),
+        }
+    }
+
+    /// [`Randomize::apply_dimension_seed`] of `reversed.reverse_bits()`:
+    /// the fast Owen scramble works on bit-reversed words, so a caller that
+    /// keeps its words reversed saves a reversal.
+    #[inline(always)]
+    pub fn apply_dimension_seed_reversed(self, reversed: u32, dimension_seed: u32) -> u32 {
+        match self {
+            Randomize::FastOwen { .. } => fast_owen_scramble_reversed(reversed, dimension_seed),
+            r => r.apply_dimension_seed(reversed.reverse_bits(), dimension_seed),
         }
     }
 
@@ -146,7 +157,9 @@ fn finish_round(shared: u64, word: u64) -> u64 {
 /// so the flip of each digit depends on all digits before it, as nested uniform
 /// scrambling requires. The last digit's flip is not truncated: all 32 digits
 /// are scrambled.
-#[inline]
+// Not inlined: 32 rounds of hashing dwarf a call, and inlining it would keep
+// the cheap strategies' `match` arms from being inlined.
+#[inline(never)]
 pub fn owen_scramble(word: u32, seed: u32) -> u32 {
     // hash3(seed, b, prefix): the round that absorbs `seed` is shared by
     // all 32 digits (see [`OwenKey`] for the round of `b` too).
@@ -211,7 +224,13 @@ impl OwenKey {
 /// the structure of a nested scramble.
 #[inline]
 pub fn fast_owen_scramble(word: u32, seed: u32) -> u32 {
-    let mut x = word.reverse_bits();
+    fast_owen_scramble_reversed(word.reverse_bits(), seed)
+}
+
+/// [`fast_owen_scramble`] of `reversed.reverse_bits()`.
+#[inline(always)]
+fn fast_owen_scramble_reversed(reversed: u32, seed: u32) -> u32 {
+    let mut x = reversed;
     x ^= x.wrapping_mul(0x3d20_adea);
     x = x.wrapping_add(seed);
     x = x.wrapping_mul((seed >> 16) | 1);
@@ -299,6 +318,11 @@ mod tests {
                 for (dim, word) in [(0u32, 0u32), (1, 0x8000_0001), (77, 0xdead_beef)] {
                     let s = dimension_seed(seed, dim);
                     assert_eq!(r.apply_dimension_seed(word, s), r.apply(word, dim));
+                    let reversed = word.reverse_bits();
+                    assert_eq!(
+                        r.apply_dimension_seed_reversed(reversed, s),
+                        r.apply(word, dim)
+                    );
                 }
             }
         }

@@ -59,7 +59,8 @@ struct Entry {
     valid: bool,
     /// Morton code of the pixel the pixel part is for.
     code: u64,
-    /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel digits.
+    /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel
+    /// digits, bit-reversed (see `Cache::lower_words`).
     upper_words: [u32; 2],
     /// Packed permutations (see [`PACKED_PERMUTATIONS`]) of the highest
     /// sample digit (entry 0) and of the next one after each value `v` of
@@ -79,7 +80,9 @@ pub(super) struct Cache {
     entries: Vec<Entry>,
     /// `levels[slot * base4_digits + i]`: the level hash of digit `i`.
     levels: Vec<u64>,
-    /// Sobol dimensions 0-1 of every `m`-bit index (empty for large `m`).
+    /// Sobol dimensions 0-1 of every `m`-bit index (empty for large `m`),
+    /// bit-reversed: the words are kept reversed because the fast Owen
+    /// scramble starts by reversing them (reversal commutes with XOR).
     lower_words: Vec<[u32; 2]>,
 }
 
@@ -88,7 +91,7 @@ impl Cache {
     pub(super) fn new(layout: &Layout) -> Self {
         let lower_words = if layout.log2_spp <= LOWER_TABLE_BITS {
             (0..1u32 << layout.log2_spp)
-                .map(|j| [sample(j, 0), sample(j, 1)])
+                .map(|j| reversed_words(j))
                 .collect()
         } else {
             Vec::new()
@@ -131,12 +134,14 @@ impl Cache {
         let lower = lower_digits(entry, levels, m, morton);
         let lower_words = match self.lower_words.get(lower as usize) {
             Some(&w) => w,
-            None => [sample(lower as u32, 0), sample(lower as u32, 1)],
+            None => reversed_words(lower as u32),
         };
         let entry = &self.entries[slot];
         Some(core::array::from_fn(|d| {
-            let word = entry.upper_words[d] ^ lower_words[d];
-            layout.randomize.apply_dimension_seed(word, entry.seeds[d])
+            let reversed = entry.upper_words[d] ^ lower_words[d];
+            layout
+                .randomize
+                .apply_dimension_seed_reversed(reversed, entry.seeds[d])
         }))
     }
 
@@ -161,6 +166,12 @@ impl Cache {
             });
         }
     }
+}
+
+/// Sobol dimensions 0-1 of `index`, bit-reversed.
+#[inline]
+fn reversed_words(index: u32) -> [u32; 2] {
+    [sample(index, 0), sample(index, 1)].map(u32::reverse_bits)
 }
 
 /// The level hash of digit `i` for a dimension seed (as `sample_index`).
@@ -213,7 +224,7 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
     for (i, &level) in (m.div_ceil(2)..).zip(&levels[m.div_ceil(2) as usize..]) {
         upper |= permuted_digit(level, morton, 2 * i - odd);
     }
-    entry.upper_words = [sample(upper as u32, 0), sample(upper as u32, 1)];
+    entry.upper_words = reversed_words(upper as u32);
     // The two highest sample digits, at shifts m - 2 and m - 4.
     let (top, sample_digits) = (m.div_ceil(2) as usize, m / 2);
     if sample_digits >= 1 {
