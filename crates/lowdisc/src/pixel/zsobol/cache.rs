@@ -90,9 +90,7 @@ impl Cache {
     /// An empty cache for `layout`; tables the low-bit words when `m` is small.
     pub(super) fn new(layout: &Layout) -> Self {
         let lower_words = if layout.log2_spp <= LOWER_TABLE_BITS {
-            (0..1u32 << layout.log2_spp)
-                .map(|j| reversed_words(j))
-                .collect()
+            (0..1u32 << layout.log2_spp).map(reversed_words).collect()
         } else {
             Vec::new()
         };
