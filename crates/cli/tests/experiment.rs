@@ -164,3 +164,62 @@ fn bad_arguments_fail_with_one_line() {
         assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
     }
 }
+
+#[test]
+fn scene_file_with_a_substituted_environment_map() {
+    let shared = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/scenes"
+    ));
+    let scene = shared.join("bitterli-material-testball/material-testball.pbrt");
+    let sky = shared.join("envmaps/polyhaven-venice_sunset_1k.hdr");
+    if !scene.is_file() || !sky.is_file() {
+        println!(
+            "skipped: {} or {} is absent",
+            scene.display(),
+            sky.display()
+        );
+        return;
+    }
+    let dir = temp_dir("experiment-scene");
+    let out = dir.join("out");
+    let o = lowdisc(&[
+        "experiment",
+        scene.to_str().unwrap(),
+        "--envmap",
+        sky.to_str().unwrap(),
+        "--samplers",
+        "sobol,zsobol",
+        "--runs",
+        "1",
+        "--spp",
+        "2",
+        "--res",
+        "24x16",
+        "--ref-spp",
+        "8",
+        "--conv-max",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "experiment failed: {stderr}");
+    assert!(stderr.contains("replaced by"), "{stderr}");
+    let md = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(md.contains("substituted for the scene's own sky"), "{md}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    // The environment map lights the scene: the reference is not black.
+    let relmse = json["samplers"][0]["relmse"]["mean"].as_f64().unwrap();
+    assert!(relmse.is_finite() && relmse > 0.0, "{relmse}");
+    let reference = lowdisc_image::read_image(out.join("reference.exr")).unwrap();
+    let mean: f64 = reference
+        .pixels()
+        .iter()
+        .map(|p| f64::from(p[0] + p[1] + p[2]))
+        .sum::<f64>()
+        / reference.pixels().len() as f64;
+    assert!(mean > 0.01, "reference mean {mean}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

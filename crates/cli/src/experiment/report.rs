@@ -173,10 +173,17 @@ fn table(results: &Results) -> String {
 
 fn markdown(config: &ExperimentConfig, results: &Results, wall: f64) -> String {
     let [w, h] = config.resolution;
-    let scene = config.scene.as_ref().map_or(
+    let mut scene = config.scene.as_ref().map_or(
         "built-in scene (gold, aluminium, car-paint coated shapes, procedural sky)".to_string(),
-        |p| p.display().to_string(),
+        |p| format!("`{}`", p.display()),
     );
+    if let Some(e) = &config.envmap {
+        let _ = write!(
+            scene,
+            ", with the environment map `{}` substituted for the scene's own sky",
+            e.display()
+        );
+    }
     let mut md = format!(
         "# lowdisc experiment\n\nScene: {scene}. {w}x{h}, {} spp, {} runs per sampler (seeds 0..{}), max depth {}. \
 Reference: {} spp with `{}` (seed {REF_SEED}), {}. Wall time {wall:.1} s.\n\n\

@@ -8,8 +8,9 @@ use anyhow::{Context, Result};
 use lowdisc::catalog::SamplerName;
 use lowdisc_image::{ErrorStats, RgbImage, error_metrics};
 use lowdisc_render::integrator::PathIntegrator;
+use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
-use lowdisc_render::scene::{Scene, load_scene_file};
+use lowdisc_render::scene::Scene;
 
 use super::reference::reference;
 use super::results::{
@@ -26,33 +27,42 @@ pub fn progress(config: &ExperimentConfig, msg: &str) {
     }
 }
 
+/// The scene and the hash of its content: the built-in scene's id or the
+/// scene file's bytes (not the files it includes), and the environment
+/// map's bytes. `--envmap` replaces the built-in sky, or every image-based
+/// `infinite` light of a scene file (pbrt-v4 scenes often ship without
+/// their environment map).
 fn load(config: &ExperimentConfig) -> Result<(Scene, u64)> {
     let mut hash = FNV_OFFSET;
-    let sky = match &config.envmap {
-        Some(p) => {
-            hash = fnv1a(
-                hash,
-                &std::fs::read(p).with_context(|| format!("cannot read `{}`", p.display()))?,
-            );
-            Some(
-                lowdisc_image::read_image(p)
-                    .with_context(|| format!("cannot read `{}`", p.display()))?,
-            )
-        }
-        None => None,
+    let read = |p: &std::path::Path| {
+        std::fs::read(p).with_context(|| format!("cannot read `{}`", p.display()))
     };
+    if let Some(p) = &config.envmap {
+        hash = fnv1a(hash, &read(p)?);
+    }
     let scene = match &config.scene {
         None => {
             hash = fnv1a(hash, scene::SCENE_ID.as_bytes());
+            let sky = match &config.envmap {
+                Some(p) => Some(
+                    lowdisc_image::read_image(p)
+                        .with_context(|| format!("cannot read `{}`", p.display()))?,
+                ),
+                None => None,
+            };
             scene::showroom(config.resolution, sky.as_ref())?
         }
         Some(path) => {
-            hash = fnv1a(
-                hash,
-                &std::fs::read(path)
-                    .with_context(|| format!("cannot read `{}`", path.display()))?,
-            );
-            let mut s = load_scene_file(path)?;
+            hash = fnv1a(hash, &read(path)?);
+            let options = LoadOptions {
+                envmap_override: config.envmap.clone(),
+            };
+            let loaded = load_pbrt_scene(path, &options)
+                .with_context(|| format!("cannot load scene `{}`", path.display()))?;
+            for w in &loaded.warnings {
+                progress(config, w);
+            }
+            let mut s = loaded.scene;
             s.set_resolution(config.resolution)?;
             s
         }
