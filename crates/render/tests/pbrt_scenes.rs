@@ -327,7 +327,7 @@ fn interface_mix_and_measured_materials() {
          Material \"interface\"\nShape \"sphere\"\n"
     );
     let l = load_text("mats", &scene).unwrap();
-    // The interface sphere is skipped; mix adds no material of its own.
+    // The interface sphere is skipped; the mix is not counted as a material.
     assert_eq!((l.counts.spheres, l.counts.materials), (2, 3));
     let mats = l.scene.materials();
     assert!(
@@ -335,7 +335,13 @@ fn interface_mix_and_measured_materials() {
         "{:?}",
         mats[1]
     );
-    for what in ["mix material", "measured material", "interface"] {
+    // The mix is kept as a material choosing per shading point (no warning).
+    assert!(
+        matches!(&mats[2], lowdisc_render::bsdf::Material::Mix(m) if m.amount.as_constant() == Some(0.8)),
+        "{:?}",
+        mats[2]
+    );
+    for what in ["measured material", "interface"] {
         assert!(
             l.warnings.iter().any(|w| w.contains(what)),
             "{what}: {:?}",

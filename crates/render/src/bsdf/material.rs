@@ -1,6 +1,15 @@
-//! Materials: pbrt-v4 material parameters, with textures already evaluated
-//! at the shading point, turned into a [`Bsdf`]; plus the stochastic choice
-//! of a `mix` material and a documented fallback for `measured`.
+//! Materials: pbrt-v4 material parameters turned into a [`Bsdf`] at a
+//! shading point; plus the stochastic choice of a `mix` material and a
+//! documented fallback for `measured`.
+//!
+//! Most variants of [`Material`] hold constant parameters (the cheap common
+//! case). [`Material::Textured`] holds a [`TexturedMaterial`] whose textures
+//! are evaluated at the hit's `uv` and position ([`BsdfContext`]) by
+//! [`Material::bsdf`], and [`Material::Mix`] picks one of two materials per
+//! point (see [`textured`]).
+
+mod mix;
+pub mod textured;
 
 use super::conductor::ConductorBxdf;
 use super::dielectric::{DielectricBxdf, ThinDielectricBxdf};
@@ -9,9 +18,12 @@ use super::layered::LayeredBxdf;
 use super::metals::named_spectrum_rgb;
 use super::microfacet::{TrowbridgeReitz, roughness_to_alpha};
 use super::{Bsdf, Bxdf, BxdfModel};
-use crate::math::Vec3;
+use crate::math::{Point2, Point3, Vec3};
 use crate::spectrum::Rgb;
-use lowdisc::hash::{hash_words, unit_f64};
+use crate::texture::TextureEvalContext;
+pub use mix::{MixMaterial, mix_choice};
+use std::sync::Arc;
+pub use textured::{TexturedConductor, TexturedMaterial, TexturedRoughness};
 
 /// Errors building a material from pbrt-v4 names.
 #[derive(Debug, Clone, PartialEq)]
@@ -104,7 +116,7 @@ impl ConductorSpec {
     }
 }
 
-/// A material with its parameters evaluated at one shading point.
+/// A material: constant parameters, or textured ones, or a mix.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Material {
     /// pbrt `diffuse`: `reflectance` (default 0.5).
@@ -172,6 +184,12 @@ pub enum Material {
         /// Walks per estimate (default 1).
         n_samples: u32,
     },
+    /// A material with textured parameters, evaluated at each shading point
+    /// (build it with [`TexturedMaterial::into_material`], which keeps
+    /// constant materials in the variants above).
+    Textured(Arc<TexturedMaterial>),
+    /// pbrt `mix`: one of two materials per shading point.
+    Mix(Arc<MixMaterial>),
 }
 
 /// Where and how a material's BSDF is built.
@@ -183,6 +201,23 @@ pub struct BsdfContext {
     pub dpdus: Vec3,
     /// Seed for the layered BxDF's random walks (e.g. the render seed).
     pub seed: u64,
+    /// Hit point (world space): 3-D and planar textures, `mix` choices.
+    pub p: Point3,
+    /// Surface texture coordinates at the hit.
+    pub uv: Point2,
+    /// Direction towards the viewer (world space, unit): `mix` choices.
+    pub wo: Vec3,
+}
+
+impl BsdfContext {
+    /// Where the material's textures are evaluated.
+    #[inline]
+    pub fn texture_context(&self) -> TextureEvalContext {
+        TextureEvalContext {
+            p: self.p,
+            uv: self.uv,
+        }
+    }
 }
 
 impl Material {
@@ -255,10 +290,24 @@ impl Material {
         Material::Diffuse { reflectance }
     }
 
-    /// The local-frame BxDF (`seed` drives the layered random walks).
+    /// The local-frame BxDF (`seed` drives the layered random walks). A
+    /// textured material is evaluated at `uv = (0, 0)`, `p = 0`, and a mix
+    /// takes the choice made there for `wo = +z`; shading uses
+    /// [`Material::bsdf`], which evaluates at the hit.
     pub fn bxdf(&self, seed: u64) -> Bxdf {
         let fix_eta = |e: f32| if e > 0.0 && e.is_finite() { e } else { 1.0 };
         match *self {
+            Material::Textured(ref t) => t.evaluate(&TextureEvalContext::default()).bxdf(seed),
+            Material::Mix(ref m) => m
+                .choose(&BsdfContext {
+                    ns: Vec3::Z,
+                    dpdus: Vec3::X,
+                    seed,
+                    p: Point3::ZERO,
+                    uv: Point2::default(),
+                    wo: Vec3::Z,
+                })
+                .bxdf(seed),
             Material::Diffuse { reflectance } => Bxdf::Diffuse(DiffuseBxdf::new(reflectance)),
             Material::Conductor { spec, roughness } => {
                 let (eta, k) = spec.eta_k();
@@ -320,38 +369,32 @@ impl Material {
         }
     }
 
-    /// The world-space BSDF at a shading point.
+    /// The world-space BSDF at a shading point, with textures evaluated at
+    /// `ctx.uv` / `ctx.p` (constant materials skip that step).
     pub fn bsdf(&self, ctx: &BsdfContext) -> Bsdf {
-        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf(ctx.seed))
+        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_at(ctx))
     }
 
-    /// True when the BSDF has only delta lobes (light sampling is useless).
+    /// The local-frame BxDF at a shading point (textures evaluated there).
+    pub fn bxdf_at(&self, ctx: &BsdfContext) -> Bxdf {
+        match self {
+            Material::Textured(t) => t.evaluate(&ctx.texture_context()).bxdf(ctx.seed),
+            Material::Mix(m) => m.choose(ctx).bxdf_at(ctx),
+            _ => self.bxdf(ctx.seed),
+        }
+    }
+
+    /// True when the BSDF has only delta lobes everywhere (light sampling is
+    /// useless); false for a material whose roughness is textured, or a mix
+    /// of which one side is not specular.
     pub fn is_specular_only(&self) -> bool {
-        let f = self.bxdf(0).flags();
-        f.is_specular() && !f.is_non_specular()
+        match self {
+            Material::Textured(t) => t.is_specular_only(),
+            Material::Mix(m) => m.materials.iter().all(Material::is_specular_only),
+            _ => {
+                let f = self.bxdf(0).flags();
+                f.is_specular() && !f.is_non_specular()
+            }
+        }
     }
-}
-
-/// pbrt-v4's `MixMaterial::ChooseMaterial`: which of two materials (0 or 1)
-/// to use at shading point `p` seen from `wo`. Material 1 is chosen with
-/// probability `amount` (clamped to `[0, 1]`), decided by a hash of `p`, `wo`
-/// and `seed` so that the choice is stable for a given point and direction.
-pub fn mix_choice(amount: f32, p: Vec3, wo: Vec3, seed: u64) -> usize {
-    if !(amount > 0.0) {
-        return 0;
-    }
-    if amount >= 1.0 {
-        return 1;
-    }
-    let bits = |x: f32| u64::from(x.to_bits());
-    let h = hash_words(&[
-        seed,
-        bits(p.x),
-        bits(p.y),
-        bits(p.z),
-        bits(wo.x),
-        bits(wo.y),
-        bits(wo.z),
-    ]);
-    if (amount as f64) < unit_f64(h) { 0 } else { 1 }
 }

@@ -12,7 +12,7 @@
 //! * [`dielectric`]: smooth and rough (Walter et al. 2007) dielectric, thin dielectric;
 //! * [`layered`]: pbrt-v4's stochastic layered BxDF (coated diffuse/conductor);
 //! * [`world`]: [`Bsdf`], a BxDF plus its shading frame, in world space;
-//! * [`material`]: material parameters (already-evaluated textures) to a [`Bsdf`];
+//! * [`material`]: material parameters (constant or textured) to a [`Bsdf`];
 //! * [`metals`]: RGB optical constants of pbrt-v4's named metal spectra.
 
 pub mod conductor;
@@ -29,7 +29,10 @@ pub use conductor::ConductorBxdf;
 pub use dielectric::{DielectricBxdf, ThinDielectricBxdf};
 pub use diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf};
-pub use material::{BsdfContext, ConductorSpec, Material, MaterialError, Roughness, mix_choice};
+pub use material::{
+    BsdfContext, ConductorSpec, Material, MaterialError, MixMaterial, Roughness, TexturedConductor,
+    TexturedMaterial, TexturedRoughness, mix_choice,
+};
 pub use microfacet::TrowbridgeReitz;
 pub use world::Bsdf;
 

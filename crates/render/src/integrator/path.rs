@@ -97,6 +97,9 @@ impl PathIntegrator {
                 ns: surf.ns,
                 dpdus: surf.dpdu,
                 seed: self.bsdf_seed,
+                p: surf.p,
+                uv: surf.uv,
+                wo,
             });
             let flags = bsdf.flags();
             let ctx = LightSampleContext::new(surf.p, surf.ng, surf.ns);

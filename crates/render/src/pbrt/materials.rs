@@ -1,15 +1,21 @@
-//! `Material`, `MakeNamedMaterial` and `Texture`: pbrt-v4 materials reduced
-//! to this crate's constant-parameter [`Material`]s, spectra reduced to RGB,
-//! textures reduced to their average value.
+//! `Material` and `MakeNamedMaterial`: pbrt-v4 materials as this crate's
+//! [`Material`]s, spectra reduced to RGB. Parameters pbrt-v4 allows to be
+//! textures become [`TexturedMaterial`] parameters (materials whose
+//! parameters are all constant stay plain constant [`Material`]s); `mix`
+//! becomes a [`MixMaterial`]. The `Texture` directive is in [`textures`].
+
+mod textures;
 
 use super::sink::PbrtLoader;
 use super::state::MatRef;
+use crate::bsdf::material::textured::{FloatTex, RgbTex, const_float, const_rgb};
 use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};
-use crate::bsdf::{ConductorSpec, Material, Roughness};
+use crate::bsdf::{Material, MixMaterial, TexturedConductor, TexturedMaterial, TexturedRoughness};
 use crate::spectrum::{Rgb, spectrum_file_to_rgb, spectrum_samples_to_rgb};
-use crate::texture::{ColorEncoding, TexImage};
+use crate::texture::{SpectrumTexture, TextureEvalContext};
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, SpectrumOrTexture, SpectrumValue};
 use std::path::Path;
+use std::sync::Arc;
 
 /// Planck's law at `lambda_nm` for temperature `t` kelvin (relative units).
 fn planck(lambda_nm: f64, t: f64) -> f64 {
@@ -83,56 +89,70 @@ impl PbrtLoader {
         })
     }
 
-    /// A spectrum-or-texture parameter as a constant RGB.
-    pub(super) fn rgb_param(
+    /// A spectrum-or-texture parameter as an RGB texture (a constant one
+    /// for values; a float texture named here is used as a grey texture).
+    pub(super) fn rgb_tex(
         &mut self,
         ps: &ParamSet,
         name: &str,
         default: Rgb,
         loc: &Loc,
-    ) -> Result<Rgb, ParseError> {
+    ) -> Result<RgbTex, ParseError> {
         match ps.get_spectrum_or_texture(name) {
-            None => Ok(default),
-            Some(SpectrumOrTexture::Value(v)) => self.spectrum_value(v, false, loc),
-            Some(SpectrumOrTexture::Texture(t)) => match self.spectrum_textures.get(t) {
-                Some(c) => Ok(*c),
-                None => match self.float_textures.get(t) {
-                    Some(&f) => Ok(Rgb::splat(f)),
+            None => Ok(const_rgb(default)),
+            Some(SpectrumOrTexture::Value(v)) => Ok(const_rgb(self.spectrum_value(v, false, loc)?)),
+            Some(SpectrumOrTexture::Texture(t)) => {
+                if let Some(tex) = self.textures.spectrum(t) {
+                    return Ok(tex);
+                }
+                match self.textures.float(t) {
+                    Some(f) => Ok(Arc::new(SpectrumTexture::Scale {
+                        tex: const_rgb(Rgb::ONE),
+                        scale: f,
+                    })),
                     None => Err(ParseError::scene(
                         loc,
                         format!("texture \"{t}\" is not defined"),
                     )),
-                },
-            },
-        }
-    }
-
-    /// A float-or-texture parameter as a constant.
-    pub(super) fn float_param(
-        &mut self,
-        ps: &ParamSet,
-        name: &str,
-        default: f32,
-        loc: &Loc,
-    ) -> Result<f32, ParseError> {
-        match ps.get_float_or_texture(name) {
-            None => Ok(default),
-            Some(FloatOrTexture::Value(v)) => Ok(v as f32),
-            Some(FloatOrTexture::Texture(t)) => {
-                self.float_textures.get(t).copied().ok_or_else(|| {
-                    ParseError::scene(loc, format!("float texture \"{t}\" is not defined"))
-                })
+                }
             }
         }
     }
 
-    /// `eta` as a float, a named glass or a spectrum (averaged).
+    /// A float-or-texture parameter as a float texture (`default` when absent).
+    pub(super) fn float_tex(
+        &mut self,
+        ps: &ParamSet,
+        name: &str,
+        default: FloatTex,
+        loc: &Loc,
+    ) -> Result<FloatTex, ParseError> {
+        match ps.get_float_or_texture(name) {
+            None => Ok(default),
+            Some(FloatOrTexture::Value(v)) => Ok(const_float(v as f32)),
+            Some(FloatOrTexture::Texture(t)) => self.textures.float(t).ok_or_else(|| {
+                ParseError::scene(loc, format!("float texture \"{t}\" is not defined"))
+            }),
+        }
+    }
+
+    /// `eta` as a float, a named glass or a spectrum (averaged). pbrt-v4
+    /// does not texture indices of refraction; a float texture given here is
+    /// read at `uv = (0, 0)` with a warning unless it is constant.
     fn eta_param(&mut self, ps: &ParamSet, name: &str, loc: &Loc) -> Result<f32, ParseError> {
         if let Some(FloatOrTexture::Value(v)) = ps.get_float_or_texture(name) {
             return Ok(v as f32);
         }
         if let Some(FloatOrTexture::Texture(_)) = ps.get_float_or_texture(name) {
-            return self.float_param(ps, name, 1.5, loc);
+            let t = self.float_tex(ps, name, const_float(1.5), loc)?;
+            if t.as_constant().is_none() {
+                let what = format!("a textured \"{name}\"");
+                self.warnings.warn_once(
+                    loc,
+                    format!("{what} is not supported; using its value at uv (0, 0)"),
+                );
+            }
+            return Ok(t.evaluate(&TextureEvalContext::default()));
         }
         match ps.get_spectrum(name) {
             Some(v) => Ok(self.spectrum_value(v, false, loc)?.average()),
@@ -145,12 +165,12 @@ impl PbrtLoader {
         ps: &ParamSet,
         prefix: &str,
         loc: &Loc,
-    ) -> Result<Roughness, ParseError> {
-        let r = self.float_param(ps, &format!("{prefix}roughness"), 0.0, loc)?;
-        let u = self.float_param(ps, &format!("{prefix}uroughness"), r, loc)?;
-        let v = self.float_param(ps, &format!("{prefix}vroughness"), r, loc)?;
+    ) -> Result<TexturedRoughness, ParseError> {
+        let r = self.float_tex(ps, &format!("{prefix}roughness"), const_float(0.0), loc)?;
+        let u = self.float_tex(ps, &format!("{prefix}uroughness"), r.clone(), loc)?;
+        let v = self.float_tex(ps, &format!("{prefix}vroughness"), r, loc)?;
         let remap = ps.bool_or("remaproughness", true);
-        Ok(Roughness { u, v, remap })
+        Ok(TexturedRoughness { u, v, remap })
     }
 
     fn conductor_spec(
@@ -158,15 +178,15 @@ impl PbrtLoader {
         ps: &ParamSet,
         prefix: &str,
         loc: &Loc,
-    ) -> Result<ConductorSpec, ParseError> {
+    ) -> Result<TexturedConductor, ParseError> {
         if ps.find("reflectance").is_some() {
-            let r = self.rgb_param(ps, "reflectance", Rgb::ONE, loc)?;
-            return Ok(ConductorSpec::Reflectance(r));
+            let r = self.rgb_tex(ps, "reflectance", Rgb::ONE, loc)?;
+            return Ok(TexturedConductor::Reflectance(r));
         }
         let cu = |w: &str| named_spectrum_rgb(&format!("metal-Cu-{w}")).unwrap_or(Rgb::ONE);
-        let eta = self.rgb_param(ps, &format!("{prefix}eta"), cu("eta"), loc)?;
-        let k = self.rgb_param(ps, &format!("{prefix}k"), cu("k"), loc)?;
-        Ok(ConductorSpec::EtaK { eta, k })
+        let eta = self.rgb_tex(ps, &format!("{prefix}eta"), cu("eta"), loc)?;
+        let k = self.rgb_tex(ps, &format!("{prefix}k"), cu("k"), loc)?;
+        Ok(TexturedConductor::EtaK { eta, k })
     }
 
     fn build_material(
@@ -178,38 +198,40 @@ impl PbrtLoader {
         let half = Rgb::splat(0.5);
         let depth = |ps: &ParamSet, d: i64| ps.int_or("maxdepth", d).clamp(1, 100) as u32;
         let nsamples = |ps: &ParamSet| ps.int_or("nsamples", 1).clamp(1, 64) as u32;
-        Ok(Some(match ty {
-            "diffuse" => Material::Diffuse {
-                reflectance: self.rgb_param(ps, "reflectance", half, loc)?,
+        let textured = match ty {
+            "diffuse" => TexturedMaterial::Diffuse {
+                reflectance: self.rgb_tex(ps, "reflectance", half, loc)?,
             },
-            "conductor" => Material::Conductor {
+            "conductor" => TexturedMaterial::Conductor {
                 spec: self.conductor_spec(ps, "", loc)?,
                 roughness: self.roughness(ps, "", loc)?,
             },
-            "dielectric" => Material::Dielectric {
+            "dielectric" => TexturedMaterial::Dielectric {
                 eta: self.eta_param(ps, "eta", loc)?,
                 roughness: self.roughness(ps, "", loc)?,
             },
-            "thindielectric" => Material::ThinDielectric {
-                eta: self.eta_param(ps, "eta", loc)?,
-            },
-            "diffusetransmission" => Material::DiffuseTransmission {
-                reflectance: self.rgb_param(ps, "reflectance", Rgb::splat(0.25), loc)?,
-                transmittance: self.rgb_param(ps, "transmittance", Rgb::splat(0.25), loc)?,
+            "thindielectric" => {
+                return Ok(Some(Material::ThinDielectric {
+                    eta: self.eta_param(ps, "eta", loc)?,
+                }));
+            }
+            "diffusetransmission" => TexturedMaterial::DiffuseTransmission {
+                reflectance: self.rgb_tex(ps, "reflectance", Rgb::splat(0.25), loc)?,
+                transmittance: self.rgb_tex(ps, "transmittance", Rgb::splat(0.25), loc)?,
                 scale: ps.float_or("scale", 1.0) as f32,
             },
-            "coateddiffuse" => Material::CoatedDiffuse {
-                reflectance: self.rgb_param(ps, "reflectance", half, loc)?,
+            "coateddiffuse" => TexturedMaterial::CoatedDiffuse {
+                reflectance: self.rgb_tex(ps, "reflectance", half, loc)?,
                 roughness: self.roughness(ps, "", loc)?,
-                thickness: self.float_param(ps, "thickness", 0.01, loc)?,
+                thickness: self.float_tex(ps, "thickness", const_float(0.01), loc)?,
                 eta: self.eta_param(ps, "eta", loc)?,
                 max_depth: depth(ps, 10),
                 n_samples: nsamples(ps),
             },
-            "coatedconductor" => Material::CoatedConductor {
+            "coatedconductor" => TexturedMaterial::CoatedConductor {
                 interface_roughness: self.roughness(ps, "interface.", loc)?,
                 interface_eta: self.eta_param(ps, "interface.eta", loc)?,
-                thickness: self.float_param(ps, "thickness", 0.01, loc)?,
+                thickness: self.float_tex(ps, "thickness", const_float(0.01), loc)?,
                 conductor: self.conductor_spec(ps, "conductor.", loc)?,
                 conductor_roughness: self.roughness(ps, "conductor.", loc)?,
                 max_depth: depth(ps, 10),
@@ -220,10 +242,71 @@ impl PbrtLoader {
                 self.warn(loc, format!(
                     "measured material \"{f}\" is approximated by a diffuse or rough conductor fallback"
                 ));
-                super::measured(&f)
+                return Ok(Some(super::measured(&f)));
             }
             _ => return Ok(None),
-        }))
+        };
+        Ok(Some(textured.into_material()))
+    }
+
+    /// A material named in a `mix`: its value, or `None` for `interface`.
+    fn mix_part(&self, name: &str, loc: &Loc) -> Result<(MatRef, Option<Material>), ParseError> {
+        let r = *self.named_materials.get(name).ok_or_else(|| {
+            ParseError::scene(loc, format!("mix: material \"{name}\" is not defined"))
+        })?;
+        let m = match r {
+            MatRef::Index(i) => self.material_values.get(&i).cloned(),
+            MatRef::Default => Material::pbrt_default("diffuse").ok(),
+            MatRef::Interface => None,
+        };
+        Ok((r, m))
+    }
+
+    /// pbrt-v4's `mix`: a [`MixMaterial`] choosing per shading point. It is
+    /// not counted in `counts.materials` (it only combines two materials
+    /// that are). An amount that is a constant `<= 0` or `>= 1` is the first
+    /// or second material itself; with an `interface` side the other is used.
+    fn mix_material(&mut self, ps: &ParamSet, loc: &Loc) -> Result<MatRef, ParseError> {
+        let names: Vec<String> = ps
+            .get_strings("materials")
+            .map(<[String]>::to_vec)
+            .unwrap_or_default();
+        if names.len() != 2 {
+            return Err(ParseError::scene(
+                loc,
+                "mix: \"string materials\" must name two materials",
+            ));
+        }
+        let amount = self.float_tex(ps, "amount", const_float(0.5), loc)?;
+        let (r0, m0) = self.mix_part(&names[0], loc)?;
+        let (r1, m1) = self.mix_part(&names[1], loc)?;
+        match amount.as_constant() {
+            Some(a) if !(a > 0.0) => return Ok(r0),
+            Some(a) if a >= 1.0 => return Ok(r1),
+            _ => {}
+        }
+        let (m0, m1) = match (m0, m1) {
+            (Some(m0), Some(m1)) => (m0, m1),
+            (m0, _) => {
+                self.warn(
+                    loc,
+                    "mix with an \"interface\" material: using the other material",
+                );
+                return Ok(if m0.is_some() { r0 } else { r1 });
+            }
+        };
+        let mix = Material::Mix(Arc::new(MixMaterial {
+            materials: [m0, m1],
+            amount,
+        }));
+        Ok(self.add_material(mix))
+    }
+
+    /// Adds `m` to the scene, remembering its value for `mix` materials.
+    fn add_material(&mut self, m: Material) -> MatRef {
+        let i = self.builder.add_material(m.clone());
+        self.material_values.insert(i, m);
+        MatRef::Index(i)
     }
 
     /// Creates the material of a `Material` or `MakeNamedMaterial` directive.
@@ -240,25 +323,7 @@ impl PbrtLoader {
                 return Ok(MatRef::Interface);
             }
             "mix" => {
-                let names: Vec<String> = ps
-                    .get_strings("materials")
-                    .map(<[String]>::to_vec)
-                    .unwrap_or_default();
-                if names.len() != 2 {
-                    return Err(ParseError::scene(
-                        loc,
-                        "mix: \"string materials\" must name two materials",
-                    ));
-                }
-                let amount = self.float_param(ps, "amount", 0.5, loc)?;
-                self.warn(
-                    loc,
-                    "mix material: using the material with the larger weight",
-                );
-                let pick = &names[usize::from(amount > 0.5)];
-                let m = *self.named_materials.get(pick).ok_or_else(|| {
-                    ParseError::scene(loc, format!("mix: material \"{pick}\" is not defined"))
-                })?;
+                let m = self.mix_material(ps, loc)?;
                 ps.warn_unused(&context, &mut self.warnings);
                 return Ok(m);
             }
@@ -285,115 +350,6 @@ impl PbrtLoader {
         }
         ps.warn_unused(&context, &mut self.warnings);
         self.counts.materials += 1;
-        Ok(MatRef::Index(self.builder.add_material(m)))
-    }
-
-    /// `Texture "name" "float"|"spectrum" "class" params`: stored as its average.
-    pub(super) fn texture_directive(
-        &mut self,
-        name: &str,
-        ty: &str,
-        class: &str,
-        ps: &ParamSet,
-        loc: &Loc,
-    ) -> Result<(), ParseError> {
-        let spectral = match ty {
-            "float" => false,
-            "spectrum" | "color" => true,
-            other => {
-                return Err(ParseError::scene(
-                    loc,
-                    format!("texture type \"{other}\" is not float or spectrum"),
-                ));
-            }
-        };
-        for p in [
-            "mapping",
-            "uscale",
-            "vscale",
-            "udelta",
-            "vdelta",
-            "filter",
-            "maxanisotropy",
-            "wrap",
-            "dimension",
-        ] {
-            ps.mark_used(p);
-        }
-        let get = |me: &mut Self, p: &str, d: f32| -> Result<Rgb, ParseError> {
-            if spectral {
-                me.rgb_param(ps, p, Rgb::splat(d), loc)
-            } else {
-                me.float_param(ps, p, d, loc).map(Rgb::splat)
-            }
-        };
-        let value = match class {
-            "constant" => get(self, "value", 1.0)?,
-            "checkerboard" => (get(self, "tex1", 1.0)? + get(self, "tex2", 0.0)?) * 0.5,
-            "scale" => get(self, "tex", 1.0)? * self.float_param(ps, "scale", 1.0, loc)?,
-            "mix" => {
-                let a = self.float_param(ps, "amount", 0.5, loc)?;
-                get(self, "tex1", 0.0)? * (1.0 - a) + get(self, "tex2", 1.0)? * a
-            }
-            "imagemap" => {
-                let file = ps.get_string("filename").ok_or_else(|| {
-                    ParseError::scene(loc, "imagemap: \"string filename\" is required")
-                })?;
-                let path = self.resolve(file);
-                let enc = match ps.get_string("encoding") {
-                    Some(e) => ColorEncoding::parse(e)
-                        .map_err(|e| ParseError::scene(loc, e.to_string()))?,
-                    None => ColorEncoding::default_for(&path),
-                };
-                if !path.is_file() {
-                    self.warn(
-                        loc,
-                        format!("imagemap: {} not found; using grey 0.5", path.display()),
-                    );
-                    ps.mark_used("scale");
-                    ps.mark_used("invert");
-                    self.store_texture(name, spectral, Rgb::splat(0.5));
-                    return Ok(());
-                }
-                let img = TexImage::load(&path, enc)
-                    .map_err(|e| ParseError::scene(loc, format!("imagemap: {e}")))?;
-                let px = img.image().pixels();
-                let mut sum = [0.0f64; 3];
-                for p in px {
-                    for c in 0..3 {
-                        sum[c] += p[c] as f64;
-                    }
-                }
-                let n = px.len().max(1) as f64;
-                let mut avg = Rgb::new(
-                    (sum[0] / n) as f32,
-                    (sum[1] / n) as f32,
-                    (sum[2] / n) as f32,
-                );
-                if ps.bool_or("invert", false) {
-                    avg = Rgb::ONE - avg;
-                }
-                avg * ps.float_or("scale", 1.0) as f32
-            }
-            other => {
-                let what = format!("texture class \"{other}\"");
-                self.unsupported(loc, &what);
-                Rgb::splat(0.5)
-            }
-        };
-        self.warnings
-            .warn_once(loc, "textures are approximated by their average value");
-        ps.warn_unused(&format!("texture \"{name}\""), &mut self.warnings);
-        self.store_texture(name, spectral, value);
-        Ok(())
-    }
-
-    fn store_texture(&mut self, name: &str, spectral: bool, value: Rgb) {
-        if spectral {
-            self.spectrum_textures.insert(name.to_string(), value);
-        } else {
-            self.float_textures
-                .insert(name.to_string(), value.average());
-        }
+        Ok(self.add_material(m))
     }
 }

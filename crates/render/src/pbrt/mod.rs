@@ -8,9 +8,8 @@
 //! override.
 //!
 //! What is approximated (each with a warning where it applies):
-//! * textures used as material parameters are reduced to their average value
-//!   (the materials of this crate take constant parameters);
-//! * `mix` materials take the material with the larger weight;
+//! * textures are evaluated at each shading point without filtering beyond
+//!   bilinear image lookups; bump, normal and displacement maps are ignored;
 //! * `measured` materials use [`Material::measured_fallback`];
 //! * `interface` shapes (medium boundaries) are skipped, media are ignored;
 //! * spectra (named, sampled, files, blackbody) are reduced to RGB;

@@ -4,13 +4,14 @@
 
 use super::state::{MatRef, StateStack, pbrt_matrix};
 use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
+use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
 use crate::film::FilmParams;
 use crate::filter::Filter;
 use crate::math::Transform;
 use crate::render::RenderError;
 use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
-use crate::spectrum::Rgb;
+use crate::texture::TextureRegistry;
 use pbrt_format::{Call, CallSink, FileKind, Loc, ParamSet, ParseError, TargetResult, Warnings};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -41,8 +42,9 @@ pub struct PbrtLoader {
     pub(super) filter: Filter,
     pub(super) named_materials: HashMap<String, MatRef>,
     pub(super) default_material: Option<u32>,
-    pub(super) float_textures: HashMap<String, f32>,
-    pub(super) spectrum_textures: HashMap<String, Rgb>,
+    pub(super) textures: TextureRegistry,
+    /// Every material added by a directive, by scene index (for `mix`).
+    pub(super) material_values: HashMap<u32, Material>,
     objects: HashMap<String, Vec<ShapeDef>>,
     current_object: Option<(String, Vec<ShapeDef>)>,
     imports: Vec<StateStack>,
@@ -69,8 +71,8 @@ impl PbrtLoader {
             filter: Filter::default(),
             named_materials: HashMap::new(),
             default_material: None,
-            float_textures: HashMap::new(),
-            spectrum_textures: HashMap::new(),
+            textures: TextureRegistry::new(),
+            material_values: HashMap::new(),
             objects: HashMap::new(),
             current_object: None,
             imports: Vec::new(),

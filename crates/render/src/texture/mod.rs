@@ -121,7 +121,7 @@ impl Checker {
 }
 
 /// An image lookup with its mapping and pbrt's `wrap`, `scale`, `invert`.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ImageTexture {
     /// The texels (shared between textures using the same file).
     pub image: Arc<TexImage>,
@@ -169,7 +169,7 @@ impl ImageTexture {
 }
 
 /// A scalar texture.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum FloatTexture {
     /// A constant (`value`).
     Constant(f32),
@@ -242,7 +242,7 @@ impl FloatTexture {
 }
 
 /// An RGB texture (pbrt's "spectrum" texture).
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum SpectrumTexture {
     /// A constant (`value`).
     Constant(Rgb),

@@ -1,0 +1,247 @@
+//! The `Texture` directive: pbrt-v4's `constant`, `scale`, `mix`,
+//! `checkerboard` (2-D over a `uv` or `planar` mapping, or 3-D) and
+//! `imagemap` float and spectrum textures, kept in the loader's
+//! [`crate::texture::TextureRegistry`] and evaluated at shading points.
+//!
+//! Lookups are point evaluations (no ray differentials): image maps are
+//! filtered bilinearly whatever `filter` says, checkerboards are not
+//! antialiased. Not supported, with a warning: the `spherical` and
+//! `cylindrical` mappings (the `uv` mapping is used), the `octahedralsphere`
+//! wrap mode (`repeat` is used) and the procedural classes (`bilerp`,
+//! `dots`, `fbm`, `marble`, `windy`, `wrinkled`, `ptex`, `directionmix`),
+//! which become a constant 0.5. A missing image file becomes grey 0.5.
+
+use super::const_float;
+use crate::math::Vec3;
+use crate::pbrt::sink::PbrtLoader;
+use crate::spectrum::Rgb;
+use crate::texture::{
+    Checker, ColorEncoding, FloatTexture, ImageTexture, SpectrumTexture, TextureEvalContext,
+    TextureMapping, WrapMode,
+};
+use pbrt_format::{Loc, ParamSet, ParseError};
+
+fn vec3(v: Option<[f64; 3]>, default: Vec3) -> Vec3 {
+    v.map_or(default, |v| {
+        Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32)
+    })
+}
+
+impl PbrtLoader {
+    /// The 2-D mapping of a texture (`mapping`, `uscale`, ..., `v1`, `v2`).
+    fn texture_mapping(&mut self, ps: &ParamSet, loc: &Loc) -> TextureMapping {
+        let f = |p: &str, d: f64| ps.float_or(p, d) as f32;
+        let (du, dv) = (f("udelta", 0.0), f("vdelta", 0.0));
+        match ps.string_or("mapping", "uv") {
+            "planar" => TextureMapping::Planar {
+                texture_from_world: self.state.cur.ctm.inverse(),
+                vs: vec3(ps.get_vector3("v1"), Vec3::X),
+                vt: vec3(ps.get_vector3("v2"), Vec3::Y),
+                ds: du,
+                dt: dv,
+            },
+            other => {
+                if other != "uv" {
+                    let what = format!("texture mapping \"{other}\" (the uv mapping is used)");
+                    self.unsupported(loc, &what);
+                }
+                TextureMapping::Uv {
+                    su: f("uscale", 1.0),
+                    sv: f("vscale", 1.0),
+                    du,
+                    dv,
+                }
+            }
+        }
+    }
+
+    /// The checkerboard's pattern (`dimension` 2 or 3).
+    fn checker(&mut self, ps: &ParamSet, loc: &Loc) -> Result<Checker, ParseError> {
+        match ps.int_or("dimension", 2) {
+            2 => Ok(Checker::TwoD(self.texture_mapping(ps, loc))),
+            3 => Ok(Checker::ThreeD(self.state.cur.ctm.inverse())),
+            d => Err(ParseError::scene(
+                loc,
+                format!("checkerboard: dimension {d} is not 2 or 3"),
+            )),
+        }
+    }
+
+    /// An `imagemap` texture, or `None` (with a warning) when the file is absent.
+    fn image_texture(
+        &mut self,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<Option<ImageTexture>, ParseError> {
+        let file = ps
+            .get_string("filename")
+            .ok_or_else(|| ParseError::scene(loc, "imagemap: \"string filename\" is required"))?;
+        let path = self.resolve(file);
+        let encoding = match ps.get_string("encoding") {
+            Some(e) => {
+                Some(ColorEncoding::parse(e).map_err(|e| ParseError::scene(loc, e.to_string()))?)
+            }
+            None => None,
+        };
+        // Point lookups are always bilinear.
+        ps.mark_used("filter");
+        ps.mark_used("maxanisotropy");
+        let wrap = match ps.string_or("wrap", "repeat") {
+            "octahedralsphere" => {
+                self.unsupported(loc, "wrap mode \"octahedralsphere\" (repeat is used)");
+                WrapMode::Repeat
+            }
+            w => WrapMode::parse(w).map_err(|e| ParseError::scene(loc, e.to_string()))?,
+        };
+        let mapping = self.texture_mapping(ps, loc);
+        let scale = ps.float_or("scale", 1.0) as f32;
+        let invert = ps.bool_or("invert", false);
+        if !path.is_file() {
+            self.warn(
+                loc,
+                format!("imagemap: {} not found; using grey 0.5", path.display()),
+            );
+            return Ok(None);
+        }
+        let image = self
+            .textures
+            .load_image(&path, encoding)
+            .map_err(|e| ParseError::scene(loc, format!("imagemap: {e}")))?;
+        Ok(Some(ImageTexture {
+            image,
+            mapping,
+            wrap,
+            scale,
+            invert,
+        }))
+    }
+
+    /// `Texture "name" "float"|"spectrum" "class" params`.
+    pub(in crate::pbrt) fn texture_directive(
+        &mut self,
+        name: &str,
+        ty: &str,
+        class: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
+        let spectral = match ty {
+            "float" => false,
+            "spectrum" | "color" => true,
+            other => {
+                return Err(ParseError::scene(
+                    loc,
+                    format!("texture type \"{other}\" is not float or spectrum"),
+                ));
+            }
+        };
+        let unknown = |me: &mut Self| {
+            let what = format!("texture class \"{class}\" (a constant 0.5 is used)");
+            me.unsupported(loc, &what);
+        };
+        let replaced = if spectral {
+            let s = |me: &mut Self, p: &str, d: f32| me.rgb_tex(ps, p, Rgb::splat(d), loc);
+            let f = |me: &mut Self, p: &str, d: f32| me.float_tex(ps, p, const_float(d), loc);
+            let tex = match class {
+                "constant" => (*s(self, "value", 1.0)?).clone(),
+                "scale" => SpectrumTexture::Scale {
+                    tex: s(self, "tex", 1.0)?,
+                    scale: f(self, "scale", 1.0)?,
+                },
+                "mix" => SpectrumTexture::Mix {
+                    tex1: s(self, "tex1", 0.0)?,
+                    tex2: s(self, "tex2", 1.0)?,
+                    amount: f(self, "amount", 0.5)?,
+                },
+                "checkerboard" => SpectrumTexture::Checkerboard {
+                    checker: self.checker(ps, loc)?,
+                    tex1: s(self, "tex1", 1.0)?,
+                    tex2: s(self, "tex2", 0.0)?,
+                },
+                "imagemap" => match self.image_texture(ps, loc)? {
+                    Some(t) => SpectrumTexture::Image(t),
+                    None => SpectrumTexture::Constant(Rgb::splat(0.5)),
+                },
+                _ => {
+                    unknown(self);
+                    SpectrumTexture::Constant(Rgb::splat(0.5))
+                }
+            };
+            let tex = fold_spectrum(tex);
+            self.textures.add_spectrum(name, tex).is_some()
+        } else {
+            let f = |me: &mut Self, p: &str, d: f32| me.float_tex(ps, p, const_float(d), loc);
+            let tex = match class {
+                "constant" => (*f(self, "value", 1.0)?).clone(),
+                "scale" => FloatTexture::Scale {
+                    tex: f(self, "tex", 1.0)?,
+                    scale: f(self, "scale", 1.0)?,
+                },
+                "mix" => FloatTexture::Mix {
+                    tex1: f(self, "tex1", 0.0)?,
+                    tex2: f(self, "tex2", 1.0)?,
+                    amount: f(self, "amount", 0.5)?,
+                },
+                "checkerboard" => FloatTexture::Checkerboard {
+                    checker: self.checker(ps, loc)?,
+                    tex1: f(self, "tex1", 1.0)?,
+                    tex2: f(self, "tex2", 0.0)?,
+                },
+                "imagemap" => match self.image_texture(ps, loc)? {
+                    Some(t) => FloatTexture::Image(t),
+                    None => FloatTexture::Constant(0.5),
+                },
+                _ => {
+                    unknown(self);
+                    FloatTexture::Constant(0.5)
+                }
+            };
+            let tex = fold_float(tex);
+            self.textures.add_float(name, tex).is_some()
+        };
+        if replaced {
+            self.warn(loc, format!("texture \"{name}\" redefined"));
+        }
+        ps.warn_unused(&format!("texture \"{name}\""), &mut self.warnings);
+        Ok(())
+    }
+}
+
+/// A `scale` or `mix` of constants, as the constant it is (so materials
+/// using it keep the constant fast path).
+fn fold_float(tex: FloatTexture) -> FloatTexture {
+    let constant = match &tex {
+        FloatTexture::Scale { tex, scale } => {
+            tex.as_constant().is_some() && scale.as_constant().is_some()
+        }
+        FloatTexture::Mix { tex1, tex2, amount } => [tex1, tex2, amount]
+            .iter()
+            .all(|t| t.as_constant().is_some()),
+        _ => false,
+    };
+    if constant {
+        FloatTexture::Constant(tex.evaluate(&TextureEvalContext::default()))
+    } else {
+        tex
+    }
+}
+
+/// The RGB counterpart of [`fold_float`].
+fn fold_spectrum(tex: SpectrumTexture) -> SpectrumTexture {
+    let constant = match &tex {
+        SpectrumTexture::Scale { tex, scale } => {
+            tex.as_constant().is_some() && scale.as_constant().is_some()
+        }
+        SpectrumTexture::Mix { tex1, tex2, amount } => {
+            tex1.as_constant().is_some()
+                && tex2.as_constant().is_some()
+                && amount.as_constant().is_some()
+        }
+        _ => false,
+    };
+    if constant {
+        SpectrumTexture::Constant(tex.evaluate(&TextureEvalContext::default()))
+    } else {
+        tex
+    }
+}
