@@ -1,9 +1,11 @@
-//! Full spheres centred at the object-space origin, placed by a transform.
+//! Full spheres centred at the object-space origin, placed by a transform;
+//! sampled uniformly by area, or (seen from outside) uniformly over the cone
+//! of directions the sphere subtends, as pbrt-v4's `Sphere::Sample(ctx, u)`.
 
 use super::{PrimHit, ShapeSample, SurfaceHit};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_sphere;
-use crate::math::{Bounds3, Point2, Ray, Transform, Vec3};
+use crate::math::{Bounds3, Frame, Point2, Point3, Ray, Transform, Vec3};
 use std::f32::consts::PI;
 
 /// A full sphere of `radius` about the object-space origin.
@@ -20,6 +22,49 @@ pub struct Sphere {
     radius: f32,
     flip: bool,
     area: f32,
+    /// World-space centre and radius when the transform is a similarity
+    /// (solid-angle sampling needs a true sphere).
+    world: Option<(Point3, f32)>,
+}
+
+/// Relative tolerance on the transform's column lengths and angles for
+/// treating it as a similarity.
+const SIMILARITY_TOLERANCE: f32 = 1e-4;
+
+/// The world-space centre and radius of a sphere of `radius` under `t`, when
+/// `t`'s linear part is a rotation times a uniform scale.
+fn similarity_sphere(t: &Transform, radius: f32) -> Option<(Point3, f32)> {
+    let m = &t.matrix().m;
+    let col = |j: usize| Vec3::new(m[0][j], m[1][j], m[2][j]);
+    let (a, b, c) = (col(0), col(1), col(2));
+    let l2 = a.length_squared();
+    let tol = SIMILARITY_TOLERANCE * l2;
+    let similar = l2 > 0.0
+        && (b.length_squared() - l2).abs() <= tol
+        && (c.length_squared() - l2).abs() <= tol
+        && a.dot(b).abs() <= tol
+        && a.dot(c).abs() <= tol
+        && b.dot(c).abs() <= tol
+        && m[3] == [0.0, 0.0, 0.0, 1.0];
+    similar.then(|| (t.point(Point3::ZERO), radius * l2.sqrt()))
+}
+
+/// How far outside the sphere (relative to the size of its coordinates) a
+/// point must be for solid-angle sampling. A point on the surface (a path
+/// vertex on the light itself, up to rounding) sees the inside of the sphere,
+/// which the outside cone does not cover, so it must get area sampling;
+/// points within the margin get it too (unbiased, only noisier).
+const OUTSIDE_MARGIN: f32 = 1e-4;
+
+/// The cone of directions subtending a sphere seen from outside it.
+struct Cone {
+    /// Unit vector from the centre towards the reference point.
+    axis: Vec3,
+    /// `sin² θmax = r² / d²`.
+    sin2_max: f32,
+    /// `1 - cos θmax`, computed as `sin² θmax / (1 + cos θmax)` (no
+    /// cancellation for small, distant spheres).
+    one_minus_cos_max: f32,
 }
 
 impl Sphere {
@@ -36,6 +81,7 @@ impl Sphere {
         }
         let scale = object_to_world.matrix().det3().abs().cbrt();
         Ok(Sphere {
+            world: similarity_sphere(&object_to_world, radius),
             world_to_object: object_to_world.inverse(),
             flip: reverse_orientation ^ object_to_world.swaps_handedness(),
             area: 4.0 * PI * radius * radius * scale * scale,
@@ -137,6 +183,68 @@ impl Sphere {
             n: self.object_to_world.normal(n).normalize(),
             uv: self.param(p_obj).0,
             pdf: 1.0 / self.area,
+        })
+    }
+
+    /// The cone seen from `p_ref`, or `None` inside, on or very near the
+    /// sphere (see [`OUTSIDE_MARGIN`]) or under a transform that is not a
+    /// similarity.
+    fn cone(&self, p_ref: Point3) -> Option<(Cone, Point3, f32)> {
+        let (c, r) = self.world?;
+        let d = p_ref - c;
+        let d2 = d.length_squared();
+        let scale = c.x.abs().max(c.y.abs()).max(c.z.abs()) + r;
+        let r_out = r + OUTSIDE_MARGIN * scale;
+        if !(d2 > r_out * r_out && d2.is_finite()) {
+            return None;
+        }
+        let sin2_max = r * r / d2;
+        let cos_max = (1.0 - sin2_max).max(0.0).sqrt();
+        let cone = Cone {
+            axis: d / d2.sqrt(),
+            sin2_max,
+            one_minus_cos_max: sin2_max / (1.0 + cos_max),
+        };
+        Some((cone, c, r))
+    }
+
+    /// The solid-angle density, at `p_ref`, of
+    /// [`Sphere::sample_solid_angle`]: `1 / (2π (1 - cos θmax))` when
+    /// `p_ref` is outside the sphere; `None` where area sampling applies
+    /// (inside, or under a non-similarity transform).
+    pub fn pdf_solid_angle(&self, p_ref: Point3) -> Option<f32> {
+        let (cone, _, _) = self.cone(p_ref)?;
+        Some(1.0 / (2.0 * PI * cone.one_minus_cos_max))
+    }
+
+    /// A point on the part of the sphere visible from `p_ref`, its direction
+    /// uniform over the cone the sphere subtends; `pdf` is the solid-angle
+    /// density ([`Sphere::pdf_solid_angle`]). `None` where area sampling
+    /// applies. The cone angle `θ` has `1 - cos θ = u0 (1 - cos θmax)`, the
+    /// azimuth is `2π u1`, and the point is the nearer intersection of that
+    /// direction with the sphere, found through the angle `α` at the centre:
+    /// by the law of sines `α = asin(sin θ / sin θmax) - θ`.
+    pub fn sample_solid_angle(&self, p_ref: Point3, u: Point2) -> Option<ShapeSample> {
+        let (cone, c, r) = self.cone(p_ref)?;
+        let t = u.x * cone.one_minus_cos_max;
+        let sin_theta = (t * (2.0 - t)).max(0.0).sqrt();
+        let ratio = (sin_theta / cone.sin2_max.sqrt()).min(1.0);
+        let alpha = (ratio.asin() - sin_theta.min(1.0).asin()).max(0.0);
+        let (sin_a, cos_a) = alpha.sin_cos();
+        let (sin_p, cos_p) = (2.0 * PI * u.y).sin_cos();
+        let frame = Frame::from_z(cone.axis);
+        let n_out = frame.from_local(Vec3::new(sin_a * cos_p, sin_a * sin_p, cos_a));
+        let p = c + n_out * r;
+        let mut p_obj = self.world_to_object.point(p);
+        let len = p_obj.length();
+        if len > 0.0 {
+            p_obj *= self.radius / len;
+        }
+        Some(ShapeSample {
+            p,
+            n: if self.flip { -n_out } else { n_out },
+            uv: self.param(p_obj).0,
+            pdf: 1.0 / (2.0 * PI * cone.one_minus_cos_max),
         })
     }
 }

@@ -1,5 +1,7 @@
 //! Diffuse area lights on triangles, spheres and disks, sampled uniformly by
-//! area and converted to solid angle.
+//! area and converted to solid angle; a sphere seen from outside is instead
+//! sampled uniformly over the cone of directions it subtends (pbrt-v4's
+//! `Sphere::Sample(ctx, u)`), falling back to area sampling inside.
 
 use super::error::{check_rgb, check_scalar};
 use super::{LightError, LightLiSample, LightSampleContext, luminance_normaliser};
@@ -182,7 +184,16 @@ impl DiffuseAreaLight {
     }
 
     pub(crate) fn sample_li(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
-        let ss = self.shape.sample(Point2::new(u[0], u[1]))?;
+        let u = Point2::new(u[0], u[1]);
+        let cone = match &self.shape {
+            AreaShape::Sphere(s) => s.sample_solid_angle(ctx.p, u),
+            _ => None,
+        };
+        let solid_angle = cone.is_some();
+        let ss = match cone {
+            Some(ss) => ss,
+            None => self.shape.sample(u)?,
+        };
         let d = ss.p - ctx.p;
         let d2 = d.length_squared();
         if !(d2 > 0.0) {
@@ -196,7 +207,11 @@ impl DiffuseAreaLight {
         Some(LightLiSample {
             l: self.l(ss.p, ss.n, ss.uv, -wi),
             wi,
-            pdf: ss.pdf * d2 / cos_l,
+            pdf: if solid_angle {
+                ss.pdf
+            } else {
+                ss.pdf * d2 / cos_l
+            },
             p_light: ss.p,
             n_light: ss.n,
             is_delta: false,
@@ -209,6 +224,11 @@ impl DiffuseAreaLight {
         p_light: Point3,
         n_light: Normal3,
     ) -> f32 {
+        if let AreaShape::Sphere(s) = &self.shape
+            && let Some(pdf) = s.pdf_solid_angle(ctx.p)
+        {
+            return pdf;
+        }
         let d = p_light - ctx.p;
         let d2 = d.length_squared();
         let cos_l = n_light.abs_dot(d) / d2.sqrt();
