@@ -1,10 +1,9 @@
-//! Binned-SAH construction (parallel) and depth-first flattening.
+//! Binned-SAH construction of the binary tree (parallel), flattened depth first.
 
-use super::flatten::{flatten, sah_cost};
-use super::{Bvh, BvhStats, MAX_DEPTH, Node};
+use super::flatten::flatten;
+use super::{MAX_DEPTH, Node};
 use crate::math::{Bounds3, Vec3};
 use rayon::prelude::*;
-use std::time::Instant;
 
 /// Options for [`Bvh::build_with`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -115,11 +114,12 @@ enum Split {
     },
 }
 
+/// Node, leaf and depth counts of a binary (sub)tree.
 #[derive(Clone, Copy, Default)]
-struct Summary {
-    nodes: usize,
-    leaves: usize,
-    max_depth: usize,
+pub(super) struct Summary {
+    pub nodes: usize,
+    pub leaves: usize,
+    pub max_depth: usize,
 }
 
 struct Builder {
@@ -351,54 +351,35 @@ impl Builder {
     }
 }
 
-impl Bvh {
-    /// Builds over primitives given by their boxes with default options.
-    pub fn build(prim_bounds: &[Bounds3]) -> Bvh {
-        Self::build_with(prim_bounds, BuildOptions::default())
+/// Builds the binary tree over primitives given by their boxes, leaving out
+/// those with an empty or non-finite box: the depth-first nodes, the leaf
+/// order and the tree's summary; `None` when no primitive is left.
+pub(super) fn build_binary(
+    prim_bounds: &[Bounds3],
+    opts: BuildOptions,
+) -> Option<(Vec<Node>, Vec<u32>, Summary)> {
+    let mut prims: Vec<BuildPrim> = prim_bounds
+        .par_iter()
+        .enumerate()
+        .filter(|(_, b)| !b.is_empty() && b.min.is_finite() && b.max.is_finite())
+        .map(|(i, b)| BuildPrim {
+            bounds: *b,
+            index: i as u32,
+        })
+        .collect();
+    if prims.is_empty() {
+        return None;
     }
-
-    /// Builds over primitives given by their boxes. Primitives with an empty
-    /// or non-finite box are left out (no ray can hit them).
-    pub fn build_with(prim_bounds: &[Bounds3], opts: BuildOptions) -> Bvh {
-        let start = Instant::now();
-        let mut prims: Vec<BuildPrim> = prim_bounds
-            .par_iter()
-            .enumerate()
-            .filter(|(_, b)| !b.is_empty() && b.min.is_finite() && b.max.is_finite())
-            .map(|(i, b)| BuildPrim {
-                bounds: *b,
-                index: i as u32,
-            })
-            .collect();
-        if prims.is_empty() {
-            return Bvh::default();
-        }
-        let builder = Builder {
-            bins: opts.bins.clamp(2, MAX_BINS),
-            max_leaf: opts.max_leaf_prims.clamp(1, 255),
-            par: opts.parallel_threshold.max(2),
-        };
-        let boxes = Boxes::of(&prims, true);
-        let (root, summary) = builder.build(&mut prims, &boxes, 0, 0);
-        debug_assert!(summary.max_depth < MAX_DEPTH);
-        let mut nodes = Vec::with_capacity(summary.nodes);
-        flatten(&root, &mut nodes);
-        drop(root);
-        let prim_order: Vec<u32> = prims.iter().map(|p| p.index).collect();
-        let build_time = start.elapsed();
-        let stats = BvhStats {
-            prims: prim_order.len(),
-            nodes: summary.nodes,
-            leaves: summary.leaves,
-            max_depth: summary.max_depth,
-            avg_leaf_size: prim_order.len() as f64 / summary.leaves as f64,
-            sah_cost: sah_cost(&nodes),
-            build_time,
-        };
-        Bvh {
-            nodes,
-            prim_order,
-            stats,
-        }
-    }
+    let builder = Builder {
+        bins: opts.bins.clamp(2, MAX_BINS),
+        max_leaf: opts.max_leaf_prims.clamp(1, 255),
+        par: opts.parallel_threshold.max(2),
+    };
+    let boxes = Boxes::of(&prims, true);
+    let (root, summary) = builder.build(&mut prims, &boxes, 0, 0);
+    debug_assert!(summary.max_depth < MAX_DEPTH);
+    let mut nodes = Vec::with_capacity(summary.nodes);
+    flatten(&root, &mut nodes);
+    drop(root);
+    Some((nodes, prims.iter().map(|p| p.index).collect(), summary))
 }

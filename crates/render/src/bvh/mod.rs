@@ -6,21 +6,28 @@
 //!   primitives; median split as fallback and below the depth where SAH
 //!   could degenerate.
 //! * Layout: compact 32-byte [`Node`]s in depth-first order (first child
-//!   follows its parent; the node stores the second child's index).
-//! * [`Bvh::closest_hit`] and [`Bvh::any_hit`] traverse near child first,
-//!   with a robust slab test (infinite inverse directions, NaN from `0 * inf`
-//!   treated as inside) and leave primitive tests to a caller closure, so the
+//!   follows its parent; the node stores the second child's index), then
+//!   collapsed into a 4-wide tree of [`Node4`]s (`wide`) for traversal.
+//! * [`Bvh::closest_hit`] and [`Bvh::any_hit`] traverse the 4-wide tree,
+//!   testing four boxes at once with a robust slab test (infinite inverse
+//!   directions, NaN from `0 * inf` treated as inside), near child first,
+//!   and leave primitive tests to a caller closure called per leaf, so the
 //!   BVH knows nothing about shapes. Primitives are addressed by their
 //!   position in [`Bvh::prim_order`] (leaf order), so callers can store
 //!   primitive data in that order for locality.
 
 mod build;
 mod flatten;
+#[cfg(test)]
+mod tests;
 mod traverse;
+mod wide;
 
 pub use build::BuildOptions;
+pub use wide::{ChildRef, INTERIOR, Node4};
 
-use std::time::Duration;
+use crate::math::Bounds3;
+use std::time::{Duration, Instant};
 
 /// A flattened BVH node: 32 bytes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -54,8 +61,10 @@ impl Node {
 pub struct BvhStats {
     /// Number of primitives.
     pub prims: usize,
-    /// Total nodes.
+    /// Total nodes of the binary tree.
     pub nodes: usize,
+    /// Nodes of the 4-wide tree used for traversal.
+    pub nodes4: usize,
     /// Leaf nodes.
     pub leaves: usize,
     /// Depth of the deepest leaf (the root has depth 0).
@@ -72,9 +81,10 @@ impl std::fmt::Display for BvhStats {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "BVH: {} prims, {} nodes, {} leaves, max depth {}, {:.2} prims/leaf, SAH cost {:.2}, built in {:.1} ms",
+            "BVH: {} prims, {} nodes ({} 4-wide), {} leaves, max depth {}, {:.2} prims/leaf, SAH cost {:.2}, built in {:.1} ms",
             self.prims,
             self.nodes,
+            self.nodes4,
             self.leaves,
             self.max_depth,
             self.avg_leaf_size,
@@ -88,6 +98,10 @@ impl std::fmt::Display for BvhStats {
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
     nodes: Vec<Node>,
+    nodes4: Vec<Node4>,
+    root4: ChildRef,
+    /// Levels of `nodes4` on the longest root-to-leaf path.
+    levels4: usize,
     prim_order: Vec<u32>,
     stats: BvhStats,
 }
@@ -100,6 +114,14 @@ impl Bvh {
     pub fn nodes(&self) -> &[Node] {
         &self.nodes
     }
+    /// The 4-wide nodes (empty when the root is a leaf).
+    pub fn nodes4(&self) -> &[Node4] {
+        &self.nodes4
+    }
+    /// The root of the 4-wide tree: node 0 of [`Bvh::nodes4`], or a leaf.
+    pub fn root4(&self) -> ChildRef {
+        self.root4
+    }
     /// `prim_order()[k]` is the input index of the `k`-th primitive in leaf order.
     pub fn prim_order(&self) -> &[u32] {
         &self.prim_order
@@ -107,5 +129,41 @@ impl Bvh {
     /// Build statistics.
     pub fn stats(&self) -> &BvhStats {
         &self.stats
+    }
+}
+
+impl Bvh {
+    /// Builds over primitives given by their boxes with default options.
+    pub fn build(prim_bounds: &[Bounds3]) -> Bvh {
+        Self::build_with(prim_bounds, BuildOptions::default())
+    }
+
+    /// Builds over primitives given by their boxes. Primitives with an empty
+    /// or non-finite box are left out (no ray can hit them).
+    pub fn build_with(prim_bounds: &[Bounds3], opts: BuildOptions) -> Bvh {
+        let start = Instant::now();
+        let Some((nodes, prim_order, summary)) = build::build_binary(prim_bounds, opts) else {
+            return Bvh::default();
+        };
+        let wide = wide::collapse(&nodes);
+        let build_time = start.elapsed();
+        let stats = BvhStats {
+            prims: prim_order.len(),
+            nodes: summary.nodes,
+            nodes4: wide.nodes.len(),
+            leaves: summary.leaves,
+            max_depth: summary.max_depth,
+            avg_leaf_size: prim_order.len() as f64 / summary.leaves as f64,
+            sah_cost: flatten::sah_cost(&nodes),
+            build_time,
+        };
+        Bvh {
+            nodes,
+            nodes4: wide.nodes,
+            root4: wide.root,
+            levels4: wide.levels,
+            prim_order,
+            stats,
+        }
     }
 }

@@ -1,5 +1,6 @@
 //! Triangle meshes: storage (world space), ray-triangle intersection
-//! (Möller-Trumbore), surface-hit construction and uniform area sampling.
+//! (Möller-Trumbore, one triangle or a [`Tri4`] packet of four at once),
+//! surface-hit construction and uniform area sampling.
 
 use super::{PrimHit, ShapeSample, SurfaceHit};
 use crate::error::Error;
@@ -169,7 +170,13 @@ impl TriangleMesh {
     /// Full surface information for a hit `h` on triangle `i` found by
     /// [`TriangleMesh::intersect`].
     pub fn surface_hit(&self, i: usize, h: &PrimHit) -> SurfaceHit {
-        let [p0, p1, p2] = self.vertices(i);
+        self.surface_hit_at(i, h, self.vertices(i))
+    }
+
+    /// [`TriangleMesh::surface_hit`] given the triangle's vertices (as
+    /// returned by [`TriangleMesh::vertices`]), saving their lookup.
+    #[inline]
+    pub fn surface_hit_at(&self, i: usize, h: &PrimHit, [p0, p1, p2]: [Point3; 3]) -> SurfaceHit {
         let b = [1.0 - h.u - h.v, h.u, h.v];
         let p = p0 * b[0] + p1 * b[1] + p2 * b[2];
         let uv = self.uv_of(i);
@@ -250,5 +257,152 @@ pub fn intersect_triangle(ray: &Ray, t_max: f32, [p0, p1, p2]: [Point3; 3]) -> O
         Some(PrimHit { t, u, v })
     } else {
         None
+    }
+}
+
+/// Four triangles' vertices in structure-of-arrays form, `p[vertex][axis][lane]`,
+/// for [`Tri4::intersect`]. Unused lanes hold degenerate (all-zero)
+/// triangles, which never hit.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C, align(16))]
+pub struct Tri4 {
+    /// `p[vertex][axis][lane]`.
+    pub p: [[[f32; 4]; 3]; 3],
+}
+
+/// Per-lane results of [`Tri4::intersect`]: `mask` bit `l` is set when lane
+/// `l` is hit; then `t[l]`, `u[l]`, `v[l]` are as in [`PrimHit`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hits4 {
+    /// Hit distances.
+    pub t: [f32; 4],
+    /// Barycentric weights of the second vertex.
+    pub u: [f32; 4],
+    /// Barycentric weights of the third vertex.
+    pub v: [f32; 4],
+    /// Lanes hit.
+    pub mask: u32,
+}
+
+impl Tri4 {
+    /// Stores triangle `tri` in `lane`.
+    pub fn set(&mut self, lane: usize, tri: [Point3; 3]) {
+        for (pv, q) in self.p.iter_mut().zip(tri) {
+            [pv[0][lane], pv[1][lane], pv[2][lane]] = [q.x, q.y, q.z];
+        }
+    }
+
+    /// The triangle in `lane`.
+    #[inline]
+    pub fn get(&self, lane: usize) -> [Point3; 3] {
+        self.p
+            .map(|pv| Point3::new(pv[0][lane], pv[1][lane], pv[2][lane]))
+    }
+
+    /// [`intersect_triangle`] on all four lanes at once (straight-line code
+    /// the compiler vectorises), with the same arithmetic per lane, so the
+    /// results are bit-identical to it.
+    #[inline(always)]
+    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Hits4 {
+        let (o, d) = (ray.o, ray.d);
+        let [p0, p1, p2] = &self.p;
+        let mut h = Hits4 {
+            t: [0.0; 4],
+            u: [0.0; 4],
+            v: [0.0; 4],
+            mask: 0,
+        };
+        let mut ok = [false; 4];
+        for l in 0..4 {
+            let e1 = Vec3::new(
+                p1[0][l] - p0[0][l],
+                p1[1][l] - p0[1][l],
+                p1[2][l] - p0[2][l],
+            );
+            let e2 = Vec3::new(
+                p2[0][l] - p0[0][l],
+                p2[1][l] - p0[1][l],
+                p2[2][l] - p0[2][l],
+            );
+            let pvec = d.cross(e2);
+            let det = e1.dot(pvec);
+            let inv = 1.0 / det;
+            let tvec = Vec3::new(o.x - p0[0][l], o.y - p0[1][l], o.z - p0[2][l]);
+            let u = tvec.dot(pvec) * inv;
+            let qvec = tvec.cross(e1);
+            let v = d.dot(qvec) * inv;
+            let t = e2.dot(qvec) * inv;
+            // Non-short-circuit `&` keeps this branch-free (vectorisable).
+            #[allow(clippy::manual_range_contains)]
+            let hit = (det != 0.0)
+                & (det.abs() < f32::INFINITY)
+                & (u >= 0.0)
+                & (u <= 1.0)
+                & (v >= 0.0)
+                & (u + v <= 1.0)
+                & (t > 0.0)
+                & (t < t_max);
+            ok[l] = hit;
+            (h.t[l], h.u[l], h.v[l]) = (t, u, v);
+        }
+        for (l, &k) in ok.iter().enumerate() {
+            h.mask |= (k as u32) << l;
+        }
+        h
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lowdisc::hash::mix64;
+
+    /// Every lane of a packet gives exactly `intersect_triangle`'s answer,
+    /// including degenerate triangles, edge-on and axis-parallel rays.
+    #[test]
+    fn packet_lanes_equal_the_single_triangle_test() {
+        let mut s = 7u64;
+        let mut f = move || {
+            s += 1;
+            (mix64(s) >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+        };
+        let mut hits = 0;
+        for k in 0..20_000 {
+            let mut tris = [[Point3::ZERO; 3]; 4];
+            for (l, t) in tris.iter_mut().enumerate() {
+                *t = [0, 1, 2].map(|_| Point3::new(f(), f(), f()));
+                match (k + l) % 6 {
+                    0 => t[2] = t[0] + (t[1] - t[0]) * 0.5,     // collinear
+                    1 => t.iter_mut().for_each(|p| p.z = 0.25), // axis-aligned
+                    _ => {}
+                }
+            }
+            let mut packet = Tri4::default();
+            for (l, t) in tris.iter().enumerate() {
+                packet.set(l, *t);
+                assert_eq!(packet.get(l), *t);
+            }
+            let o = Point3::new(f() * 2.0, f() * 2.0, f() * 2.0);
+            // Mostly aimed near a triangle's centroid.
+            let [a, b, c] = tris[k % 4];
+            let aim = (a + b + c) * (1.0 / 3.0) + Vec3::new(f(), f(), f()) * 0.3;
+            let d = match k % 5 {
+                0 => Vec3::new(0.0, -0.0, 1.0),
+                _ => (aim - o).normalize(),
+            };
+            let (ray, t_max) = (Ray::new(o, d), if k % 3 == 0 { 1.0 } else { f32::INFINITY });
+            let h = packet.intersect(&ray, t_max);
+            for (l, t) in tris.iter().enumerate() {
+                let want = intersect_triangle(&ray, t_max, *t);
+                let got = (h.mask >> l & 1 == 1).then(|| PrimHit {
+                    t: h.t[l],
+                    u: h.u[l],
+                    v: h.v[l],
+                });
+                assert_eq!(got, want, "case {k} lane {l}");
+                hits += want.is_some() as usize;
+            }
+        }
+        assert!(hits > 5000, "{hits}");
     }
 }
