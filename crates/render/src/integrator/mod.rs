@@ -2,7 +2,7 @@
 //! importance sampling (pbrt-v4's `PathIntegrator`), in RGB.
 //!
 //! **RGB rendering.** Radiance, reflectance and emission are linear RGB
-//! triples ([`Rgb`]); there is no spectral sampling. Spectral inputs are
+//! triples ([`Rgb`](crate::spectrum::Rgb)); there is no spectral sampling. Spectral inputs are
 //! reduced to RGB when the scene is built.
 //!
 //! **Estimator.** At every non-specular vertex one light is chosen in

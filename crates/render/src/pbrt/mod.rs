@@ -1,5 +1,5 @@
 //! pbrt-v4 scene loading: a [`pbrt_format::ParserTarget`] that keeps pbrt's
-//! graphics state and builds a [`Scene`] with a [`SceneBuilder`].
+//! graphics state and builds a [`Scene`] with a [`SceneBuilder`](crate::scene::SceneBuilder).
 //!
 //! Entry point: [`load_pbrt_scene`]. It returns the scene, the warnings (one
 //! per unsupported directive or parameter, with `file:line:column`) and the
