@@ -1,11 +1,15 @@
 //! Tests of the 4-wide tree: its structure against the binary tree, and
 //! closest-hit / any-hit queries through [`Accel`] against brute force over
 //! all primitives, on mixed scenes (triangles, spheres, disks), including
-//! rays that start on surfaces, axis-parallel rays and short `t_max`.
+//! rays that start on surfaces, axis-parallel rays and short `t_max`; and of
+//! the [`Tri4`] packets [`Accel`] tests leaves with.
 
 use super::{Bvh, ChildRef, INTERIOR, Node4};
 use crate::Accel;
-use crate::geometry::{Disk, MeshData, Prim, ShapeSet, Sphere, TriangleMesh};
+use crate::geometry::triangle::Tri4;
+use crate::geometry::{
+    Disk, MeshData, Prim, PrimHit, ShapeSet, Sphere, TriangleMesh, intersect_triangle,
+};
 use crate::math::{Bounds3, Point2, Point3, Ray, Transform, Vec3};
 use lowdisc::hash::mix64;
 
@@ -192,4 +196,53 @@ fn wide_tree_covers_every_binary_leaf_once() {
     let r = Ray::new(Point3::ZERO, Vec3::X);
     assert!(empty.closest_hit(&r, 1.0, |_, _, _| Some(0.5)).is_none());
     assert!(!empty.any_hit(&r, 1.0, |_, _, _| true));
+}
+
+/// Every lane of a packet gives exactly `intersect_triangle`'s answer,
+/// including degenerate triangles, edge-on and axis-parallel rays.
+#[test]
+fn packet_lanes_equal_the_single_triangle_test() {
+    let mut s = 7u64;
+    let mut f = move || {
+        s += 1;
+        (mix64(s) >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+    };
+    let mut hits = 0;
+    for k in 0..20_000 {
+        let mut tris = [[Point3::ZERO; 3]; 4];
+        for (l, t) in tris.iter_mut().enumerate() {
+            *t = [0, 1, 2].map(|_| Point3::new(f(), f(), f()));
+            match (k + l) % 6 {
+                0 => t[2] = t[0] + (t[1] - t[0]) * 0.5,     // collinear
+                1 => t.iter_mut().for_each(|p| p.z = 0.25), // axis-aligned
+                _ => {}
+            }
+        }
+        let mut packet = Tri4::default();
+        for (l, t) in tris.iter().enumerate() {
+            packet.set(l, *t);
+            assert_eq!(packet.get(l), *t);
+        }
+        let o = Point3::new(f() * 2.0, f() * 2.0, f() * 2.0);
+        // Mostly aimed near a triangle's centroid.
+        let [a, b, c] = tris[k % 4];
+        let aim = (a + b + c) * (1.0 / 3.0) + Vec3::new(f(), f(), f()) * 0.3;
+        let d = match k % 5 {
+            0 => Vec3::new(0.0, -0.0, 1.0),
+            _ => (aim - o).normalize(),
+        };
+        let (ray, t_max) = (Ray::new(o, d), if k % 3 == 0 { 1.0 } else { f32::INFINITY });
+        let h = packet.intersect(&ray, t_max);
+        for (l, t) in tris.iter().enumerate() {
+            let want = intersect_triangle(&ray, t_max, *t);
+            let got = (h.mask >> l & 1 == 1).then(|| PrimHit {
+                t: h.t[l],
+                u: h.u[l],
+                v: h.v[l],
+            });
+            assert_eq!(got, want, "case {k} lane {l}");
+            hits += want.is_some() as usize;
+        }
+    }
+    assert!(hits > 5000, "{hits}");
 }
