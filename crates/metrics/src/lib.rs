@@ -13,8 +13,8 @@
 //! | radial power spectrum (2-D) | [`radial_power_spectrum`] | `abs(Σ e^{−2πi k·x})²/N` averaged over rings | separable phases | `N K²` |
 //!
 //! Details, formulas and references are in each module's documentation: [`star`],
-//! [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon; results do not depend
-//! on the thread count except for floating-point summation order (L2 sums, spectra).
+//! [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon and sum in a fixed
+//! order, so every result is bit-identical whatever the thread count.
 
 pub mod distance;
 mod error;

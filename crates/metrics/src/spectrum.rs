@@ -97,16 +97,16 @@ pub fn radial_power_spectrum(points: &PointSet, max_frequency: usize) -> Result<
             }
             (sum, cnt)
         })
-        .reduce(
-            || (vec![0.0; kmax + 1], vec![0usize; kmax + 1]),
-            |mut a, b| {
-                for r in 0..=kmax {
-                    a.0[r] += b.0[r];
-                    a.1[r] += b.1[r];
-                }
-                a
-            },
-        );
+        .collect::<Vec<_>>()
+        .into_iter()
+        // Summed in k_x order, so the result does not depend on the threads.
+        .fold((vec![0.0; kmax + 1], vec![0usize; kmax + 1]), |mut a, b| {
+            for r in 0..=kmax {
+                a.0[r] += b.0[r];
+                a.1[r] += b.1[r];
+            }
+            a
+        });
     let (sum, cnt) = rings;
     Ok(RadialSpectrum {
         radii: (1..=kmax).map(|r| r as f64).collect(),

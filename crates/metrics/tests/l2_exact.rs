@@ -1,6 +1,7 @@
 //! L2-type discrepancies of the fast blocked, parallel evaluation: exact rational values
 //! on product grids (where the heavy cancellation of the formulas is worst), the same
-//! bits whatever the number of threads, block and chunk boundaries, and large `d`.
+//! bits whatever the number of threads (and for the power spectrum), block and chunk
+//! boundaries, and large `d`.
 
 mod common;
 
@@ -216,4 +217,26 @@ fn equal_direct_evaluation_at_block_edges_and_large_d() {
             );
         }
     }
+}
+
+#[test]
+fn spectrum_has_the_same_bits_for_every_thread_count() {
+    let p = random(300, 2, 5);
+    let with_threads = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            lowdisc_metrics::radial_power_spectrum(&p, 24)
+                .unwrap()
+                .power
+                .iter()
+                .map(|v| v.to_bits())
+                .collect::<Vec<_>>()
+        })
+    };
+    let one = with_threads(1);
+    assert_eq!(one, with_threads(2));
+    assert_eq!(one, with_threads(3));
 }
