@@ -1,6 +1,7 @@
 //! BVH build time and ray throughput on the bmw-m6 meshes (all PLY files in
 //! `shared/scenes/bmw-m6/geometry`, untransformed) when present, else on a
-//! generated mesh of about 800k triangles.
+//! generated mesh of about 800k triangles; and ray throughput in the
+//! built-in Cornell box (38 triangles) for rays leaving points inside it.
 
 #![allow(missing_docs)] // criterion_group! generates undocumented functions
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -56,6 +57,65 @@ fn shapes() -> (ShapeSet, String) {
         return (set, "generated grid".into());
     }
     (set, format!("bmw-m6 ({} files)", files.len()))
+}
+
+/// Rays from points inside `accel`'s bounds in all directions (SplitMix64).
+fn inner_rays(accel: &Accel, n: usize) -> Vec<Ray> {
+    let mut s = 0x2545f4914f6cdd1du64;
+    let mut next = move || {
+        s = s.wrapping_add(0x9e3779b97f4a7c15);
+        let mut z = s;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58476d1ce4e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d049bb133111eb);
+        ((z ^ (z >> 31)) >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let b = accel.bounds();
+    (0..n)
+        .map(|_| {
+            let o = b.min
+                + b.diagonal() * Vec3::new(next(), next(), next()) * 0.98
+                + b.diagonal() * 0.01;
+            let d = Vec3::new(next() - 0.5, next() - 0.5, next() - 0.5);
+            Ray::new(o, d.normalize())
+        })
+        .collect()
+}
+
+fn bench_cornell(c: &mut Criterion) {
+    let scene = lowdisc_render::cornell::cornell_box([64, 64]).expect("built-in scene");
+    let accel = Accel::build(scene.shapes().clone());
+    let rs = inner_rays(&accel, 100_000);
+    let mut g = c.benchmark_group("bvh");
+    g.sample_size(10);
+    g.throughput(Throughput::Elements(rs.len() as u64));
+    g.bench_function("closest-hit rays cornell box", |b| {
+        b.iter(|| {
+            rs.iter()
+                .filter(|r| accel.intersect(r, f32::INFINITY).is_some())
+                .count()
+        })
+    });
+    // Shadow rays: half the distance to the closest hit (unoccluded).
+    let shadow: Vec<(Ray, f32)> = rs
+        .iter()
+        .map(|r| {
+            (
+                *r,
+                accel
+                    .intersect(r, f32::INFINITY)
+                    .map_or(1.0, |h| 0.5 * h.surface.t),
+            )
+        })
+        .collect();
+    g.bench_function("any-hit rays cornell box", |b| {
+        b.iter(|| {
+            shadow
+                .iter()
+                .filter(|(r, t)| accel.intersect_p(r, *t))
+                .count()
+        })
+    });
+    g.finish();
 }
 
 /// Rays from points around the scene towards points inside it (SplitMix64).
@@ -118,5 +178,5 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+criterion_group!(benches, bench_cornell, bench);
 criterion_main!(benches);
