@@ -10,6 +10,9 @@ use super::wide::{ChildRef, INTERIOR, Node4};
 use super::{Bvh, MAX_DEPTH};
 use crate::math::{Ray, gamma};
 
+/// Stack size for trees of at most `MICRO_STACK / 3` levels (small scenes:
+/// zeroing it per ray costs a few stores instead of a `memset` call).
+const MICRO_STACK: usize = 9;
 /// Stack size for trees of at most `TINY_STACK / 3` levels.
 const TINY_STACK: usize = 24;
 /// Stack size for trees of at most `SMALL_STACK / 3` levels.
@@ -126,7 +129,9 @@ impl Bvh {
     ) -> Option<f32> {
         // The stack is zeroed per ray: size it to the tree.
         let need = self.levels4 * 3;
-        if need <= TINY_STACK {
+        if need <= MICRO_STACK {
+            self.closest_hit_n::<MICRO_STACK>(ray, t_max, leaf)
+        } else if need <= TINY_STACK {
             self.closest_hit_n::<TINY_STACK>(ray, t_max, leaf)
         } else if need <= SMALL_STACK {
             self.closest_hit_n::<SMALL_STACK>(ray, t_max, leaf)
@@ -143,7 +148,9 @@ impl Bvh {
     #[inline]
     pub fn any_hit(&self, ray: &Ray, t_max: f32, leaf: impl FnMut(u32, u32, f32) -> bool) -> bool {
         let need = self.levels4 * 3;
-        if need <= TINY_STACK {
+        if need <= MICRO_STACK {
+            self.any_hit_n::<MICRO_STACK>(ray, t_max, leaf)
+        } else if need <= TINY_STACK {
             self.any_hit_n::<TINY_STACK>(ray, t_max, leaf)
         } else if need <= SMALL_STACK {
             self.any_hit_n::<SMALL_STACK>(ray, t_max, leaf)
