@@ -50,13 +50,16 @@ def best_lowdisc(binary, args, runs, tmp):
     return min(results, key=lambda r: r[0])
 
 
-def mitsuba_best(variant, res, spp, maxdepth, runs):
+def mitsuba_best(variant, res, spp, maxdepth, runs, rr_depth):
     import drjit as dr
     import mitsuba as mi
 
     mi.set_variant(variant)
     with tempfile.TemporaryDirectory() as tmp:
-        scene = mi.load_dict(mitsuba_cornell.scene_dict(mi, tmp, res, spp, maxdepth))
+        d = mitsuba_cornell.scene_dict(mi, tmp, res, spp, maxdepth)
+        if rr_depth is not None:
+            d["integrator"]["rr_depth"] = rr_depth
+        scene = mi.load_dict(d)
     times = []
     for run in range(runs + 1):
         t0 = time.perf_counter()
@@ -78,16 +81,22 @@ def main():
     ap.add_argument("--envmap", default=os.path.join(
         SHARED, "envmaps", "polyhaven-kiara_1_dawn_1k.hdr"))
     ap.add_argument("--variants", default="scalar_rgb,llvm_ad_rgb")
+    ap.add_argument("--mitsuba-rr-depth", type=int, default=None,
+                    help="Mitsuba's rr_depth (default: Mitsuba's own, 5; lowdisc, like "
+                    "pbrt-v4, starts Russian roulette after the second bounce)")
+    ap.add_argument("--skip-lowdisc", action="store_true")
     a = ap.parse_args()
     res = [int(v) for v in a.res.lower().split("x")]
     common = ["--res", a.res, "--spp", str(a.spp), "--maxdepth", str(a.maxdepth)]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for sampler in ("independent", "zsobol"):
+        for sampler in () if a.skip_lowdisc else ("independent", "zsobol"):
             t, rays, _ = best_lowdisc(a.lowdisc, common + ["--sampler", sampler], a.runs, tmp)
             rows.append(("lowdisc `%s`" % sampler, "built-in Cornell box", t, rays))
         bmw = os.path.join(SHARED, "bmw-m6", "bmw-m6.pbrt")
-        if os.path.isfile(bmw) and os.path.isfile(a.envmap):
+        if a.skip_lowdisc:
+            pass
+        elif os.path.isfile(bmw) and os.path.isfile(a.envmap):
             t, rays, stats = best_lowdisc(
                 a.lowdisc, [bmw, "--envmap", a.envmap, "--sampler", "zsobol"] + common,
                 a.runs, tmp)
@@ -97,8 +106,9 @@ def main():
         else:
             print("bmw-m6 skipped: %s or %s is absent" % (bmw, a.envmap), file=sys.stderr)
     for variant in a.variants.split(","):
-        t, version = mitsuba_best(variant, res, a.spp, a.maxdepth, a.runs)
-        rows.append(("Mitsuba %s `%s`" % (version, variant), "same Cornell box", t, None))
+        t, version = mitsuba_best(variant, res, a.spp, a.maxdepth, a.runs, a.mitsuba_rr_depth)
+        rr = "" if a.mitsuba_rr_depth is None else ", rr_depth %d" % a.mitsuba_rr_depth
+        rows.append(("Mitsuba %s `%s`%s" % (version, variant, rr), "same Cornell box", t, None))
     print("%s, %d spp, max depth %d (Mitsuba max_depth %d), best of %d runs\n"
           % (a.res, a.spp, a.maxdepth, a.maxdepth + 1, a.runs))
     print("| renderer | scene | time | rays/s |")
