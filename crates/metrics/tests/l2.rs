@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::random;
+use common::{direct, random};
 use lowdisc_metrics::{L2Method, PointSet, l2_discrepancies, l2_discrepancy};
 
 fn doc2d() -> PointSet {
@@ -83,48 +83,6 @@ fn equal_pinned_scipy_values() {
     }
     assert!(!L2Method::L2Star.is_squared() && L2Method::Mixture.is_squared());
     assert_eq!(L2Method::WrapAround.scipy_name(), "WD");
-}
-
-/// The closed forms, written as plain double loops over all (i, j).
-fn direct(p: &PointSet, m: L2Method) -> f64 {
-    let n = p.len() as f64;
-    let d = p.dims() as i32;
-    let z = |x: f64| (x - 0.5).abs();
-    let (mut s1, mut s2) = (0.0, 0.0);
-    for a in p.iter() {
-        s1 += a
-            .iter()
-            .map(|&x| match m {
-                L2Method::L2Star => 1.0 - x * x,
-                L2Method::Centered => 1.0 + z(x) / 2.0 - z(x) * z(x) / 2.0,
-                L2Method::WrapAround => 0.0,
-                L2Method::Mixture => 5.0 / 3.0 - z(x) / 4.0 - z(x) * z(x) / 4.0,
-            })
-            .product::<f64>();
-        for b in p.iter() {
-            s2 += a
-                .iter()
-                .zip(b)
-                .map(|(&x, &y)| {
-                    let t = (x - y).abs();
-                    match m {
-                        L2Method::L2Star => 1.0 - x.max(y),
-                        L2Method::Centered => 1.0 + z(x) / 2.0 + z(y) / 2.0 - t / 2.0,
-                        L2Method::WrapAround => 1.5 - t + t * t,
-                        L2Method::Mixture => {
-                            15.0 / 8.0 - z(x) / 4.0 - z(y) / 4.0 - 0.75 * t + t * t / 2.0
-                        }
-                    }
-                })
-                .product::<f64>();
-        }
-    }
-    match m {
-        L2Method::L2Star => (3f64.powi(-d) - 2f64.powi(1 - d) / n * s1 + s2 / (n * n)).sqrt(),
-        L2Method::Centered => (13.0f64 / 12.0).powi(d) - 2.0 / n * s1 + s2 / (n * n),
-        L2Method::WrapAround => -(4.0f64 / 3.0).powi(d) + s2 / (n * n),
-        L2Method::Mixture => (19.0f64 / 12.0).powi(d) - 2.0 / n * s1 + s2 / (n * n),
-    }
 }
 
 #[test]

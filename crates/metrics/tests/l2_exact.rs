@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::random;
+use common::{direct, random};
 use lowdisc_metrics::{L2Method, PointSet, l2_discrepancy};
 
 /// A small exact rational, always reduced, denominator positive.
@@ -147,48 +147,6 @@ fn same_bits_for_every_thread_count() {
     assert_eq!(one, with_threads(2));
     assert_eq!(one, with_threads(3));
     assert_eq!(one, L2Method::ALL.map(|m| l2_discrepancy(&p, m).to_bits()));
-}
-
-/// The closed forms, written as plain double loops over all (i, j).
-fn direct(p: &PointSet, m: L2Method) -> f64 {
-    let (n, d) = (p.len() as f64, p.dims() as i32);
-    let z = |x: f64| (x - 0.5).abs();
-    let (mut s1, mut s2) = (0.0, 0.0);
-    for a in p.iter() {
-        s1 += a
-            .iter()
-            .map(|&x| match m {
-                L2Method::L2Star => 1.0 - x * x,
-                L2Method::Centered => 1.0 + z(x) / 2.0 - z(x) * z(x) / 2.0,
-                L2Method::WrapAround => 0.0,
-                L2Method::Mixture => 5.0 / 3.0 - z(x) / 4.0 - z(x) * z(x) / 4.0,
-            })
-            .product::<f64>();
-        for b in p.iter() {
-            s2 += a
-                .iter()
-                .zip(b)
-                .map(|(&x, &y)| {
-                    let t = (x - y).abs();
-                    match m {
-                        L2Method::L2Star => 1.0 - x.max(y),
-                        L2Method::Centered => 1.0 + z(x) / 2.0 + z(y) / 2.0 - t / 2.0,
-                        L2Method::WrapAround => 1.5 - t + t * t,
-                        L2Method::Mixture => {
-                            1.875 - z(x) / 4.0 - z(y) / 4.0 - 0.75 * t + t * t / 2.0
-                        }
-                    }
-                })
-                .product::<f64>();
-        }
-    }
-    let (s1, s2) = (s1 / n, s2 / (n * n));
-    match m {
-        L2Method::L2Star => (3f64.powi(-d) - 2f64.powi(1 - d) * s1 + s2).sqrt(),
-        L2Method::Centered => (13.0f64 / 12.0).powi(d) - 2.0 * s1 + s2,
-        L2Method::WrapAround => -(4.0f64 / 3.0).powi(d) + s2,
-        L2Method::Mixture => (19.0f64 / 12.0).powi(d) - 2.0 * s1 + s2,
-    }
 }
 
 /// Sizes around the 16-point blocks and the 32-row chunks (masked lanes, a short last
