@@ -155,6 +155,9 @@ fn bad_arguments_fail_with_one_line() {
         vec!["experiment", "--samplers", "sobel"],
         vec!["experiment", "--runs", "0"],
         vec!["experiment", "--conv-max", "12"],
+        vec!["experiment", "--conv-res", "0x0"],
+        vec!["experiment", "--conv-res", "99999x2"],
+        vec!["experiment", "--conv-ref-spp", "0"],
         vec!["experiment", "/nonexistent/scene.pbrt"],
     ] {
         let o = lowdisc(&args);
@@ -200,12 +203,23 @@ fn scene_file_with_a_substituted_environment_map() {
         "8",
         "--conv-max",
         "2",
+        "--conv-res",
+        "12x8",
         "--out",
         out.to_str().unwrap(),
     ]);
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "experiment failed: {stderr}");
     assert!(stderr.contains("replaced by"), "{stderr}");
+    // The convergence series has its own reference: 12x8 at 8 x 2 spp.
+    assert!(
+        stderr.contains("rendering reference: 24x16, 8 spp"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("rendering reference: 12x8, 16 spp"),
+        "{stderr}"
+    );
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert!(md.contains("substituted for the scene's own sky"), "{md}");
     let json: serde_json::Value =
@@ -213,6 +227,15 @@ fn scene_file_with_a_substituted_environment_map() {
     // The environment map lights the scene: the reference is not black.
     let relmse = json["samplers"][0]["relmse"]["mean"].as_f64().unwrap();
     assert!(relmse.is_finite() && relmse > 0.0, "{relmse}");
+    assert_eq!(json["settings"]["conv_res"], serde_json::json!([12, 8]));
+    assert_eq!(json["settings"]["conv_ref_spp"], 16);
+    assert_ne!(
+        json["convergence_reference"]["file"],
+        json["reference"]["file"]
+    );
+    let conv = json["samplers"][1]["convergence"].as_array().unwrap();
+    assert_eq!(conv.len(), 2); // 1 and 2 spp
+    assert!(conv.iter().all(|c| c["relmse"].as_f64().unwrap() > 0.0));
     let reference = lowdisc_image::read_image(out.join("reference.exr")).unwrap();
     let mean: f64 = reference
         .pixels()

@@ -12,8 +12,9 @@
 //! - `results.json`, schema (every number of the report):
 //!   `{ schema: 1, command: [args], version, git_hash?, machine: {cpu, cores},
 //!   settings: {scene, width, height, spp, runs, ref_spp, ref_sampler, ref_seed,
-//!   max_depth, threshold, conv_max, samplers: [names]}, reference: {file,
-//!   cached, time_s}, samplers: [{ name, description, deterministic,
+//!   max_depth, threshold, conv_max, conv_res: [w, h], conv_ref_spp, samplers:
+//!   [names]}, reference: {file, cached, time_s}, convergence_reference:
+//!   {file, cached, time_s}, samplers: [{ name, description, deterministic,
 //!   time_s, mse, relmse, rmse, mae (linear, each {mean, sd}),
 //!   srgb8: {mse, relmse, rmse, mae} (each {mean, sd}),
 //!   relmse_ratio_to_sobol (number or null), runs: [{seed, time_s, linear:
@@ -27,8 +28,13 @@
 //! `<parent of --out>/lowdisc-ref-cache/ref-<hash>.pfm`, keyed by an FNV-1a
 //! hash of the scene's content (the built-in scene's id, or the scene file's
 //! bytes), the environment map's bytes and every render setting; reruns
-//! reuse it and say so on stderr. Every file is written to a temporary file
-//! and renamed into place.
+//! reuse it and say so on stderr. The convergence series (1 to `--conv-max`
+//! spp, seed 0) is rendered at `--conv-res` (default: half the resolution
+//! per side) against its own reference of `--conv-ref-spp` (default 8 x
+//! `--conv-max`) samples, cached the same way, so that the series can reach
+//! 1024 spp within the default run's time; the reference's own noise adds at
+//! most about 1/8 to the last point's relMSE. Every file is written to a
+//! temporary file and renamed into place.
 
 mod reference;
 mod report;
@@ -63,10 +69,11 @@ report.md, report.html, results.json and the images to --out.\n\
 \n\
 Without SCENE a built-in scene is used: rough gold and aluminium spheres,\n\
 car-paint-like coated shapes on a diffuse ground under a procedural sky with\n\
-a sun (no downloads). Defaults: 256x144, 16 spp, 3 runs, reference 1024 spp,\n\
-convergence up to 128 spp. --paper: 1280x720, 16 spp, 10 runs, reference\n\
-4096 spp, convergence up to 1024 spp. --quick: 32x32, 4 spp, 2 runs,\n\
-reference 64 spp, convergence up to 8 spp (for tests).";
+a sun (no downloads). Defaults: 256x144, 16 spp, 3 runs, reference 1024 spp;\n\
+convergence from 1 to 1024 spp at half the resolution per side against its\n\
+own 8192-spp reference. --paper: 1280x720, 16 spp, 10 runs, reference 4096\n\
+spp, convergence to 1024 spp at 640x360. --quick: 32x32, 4 spp, 2 runs,\n\
+reference 64 spp, convergence up to 8 spp at 32x32 (for tests).";
 
 /// The arguments of `experiment`.
 #[derive(Debug, Args)]
@@ -91,6 +98,12 @@ pub struct ExperimentArgs {
     /// Largest spp of the convergence plot (a power of two).
     #[arg(long, value_name = "N")]
     conv_max: Option<u32>,
+    /// Resolution of the convergence series [default: half of --res per side].
+    #[arg(long, value_name = "WxH")]
+    conv_res: Option<String>,
+    /// Samples per pixel of the convergence series' reference [default: 8 x --conv-max].
+    #[arg(long, value_name = "N")]
+    conv_ref_spp: Option<u32>,
     /// Environment map (lat-long 2:1 or equal-area square) replacing the built-in sky.
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
@@ -134,6 +147,10 @@ pub struct ExperimentConfig {
     pub ref_spp: u32,
     /// Convergence plot cap.
     pub conv_max: u32,
+    /// Resolution of the convergence series.
+    pub conv_res: [u32; 2],
+    /// Reference spp of the convergence series.
+    pub conv_ref_spp: u32,
     /// Environment map.
     pub envmap: Option<PathBuf>,
     /// Paper threshold (renders of `paper`/`paper-repro` and the figure).
@@ -156,7 +173,7 @@ impl ExperimentArgs {
         } else if self.paper {
             ([1280, 720], 16, 10, 4096, 1024)
         } else {
-            ([256, 144], 16, 3, 1024, 128)
+            ([256, 144], 16, 3, 1024, 1024)
         };
         let mut samplers = Vec::new();
         for name in self.samplers.iter().filter(|s| !s.trim().is_empty()) {
@@ -178,6 +195,20 @@ impl ExperimentArgs {
             }
             None => res,
         };
+        let conv_res = match self.conv_res.as_deref() {
+            Some(text) => {
+                let r = parse::resolution(text)?;
+                if r[0] > 16_384 || r[1] > 16_384 {
+                    bail!(
+                        "--conv-res `{text}` is too large: each side must be at most 16384 pixels"
+                    );
+                }
+                r
+            }
+            // --quick keeps one resolution (and so one reference).
+            None if self.quick => resolution,
+            None => resolution.map(|v| (v / 2).max(1)),
+        };
         let spp = self.spp.unwrap_or(spp);
         let runs = self.runs.unwrap_or(runs);
         let ref_spp = self.ref_spp.unwrap_or(ref_spp);
@@ -193,6 +224,14 @@ impl ExperimentArgs {
         }
         if !conv_max.is_power_of_two() || conv_max > 1 << 16 {
             bail!("--conv-max must be a power of two up to 65536, got {conv_max}");
+        }
+        let conv_ref_spp = match self.conv_ref_spp {
+            Some(n) => n,
+            None if conv_res == resolution && self.quick => ref_spp,
+            None => 8 * conv_max,
+        };
+        if conv_ref_spp == 0 || conv_ref_spp > 1 << 20 {
+            bail!("--conv-ref-spp must be between 1 and 1048576, got {conv_ref_spp}");
         }
         if self.maxdepth > lowdisc_render::integrator::MAX_DEPTH_LIMIT {
             bail!("--maxdepth is too large: {}", self.maxdepth);
@@ -220,6 +259,8 @@ impl ExperimentArgs {
             resolution,
             ref_spp,
             conv_max,
+            conv_res,
+            conv_ref_spp,
             envmap: self.envmap,
             threshold: parse::threshold(self.threshold)?,
             max_depth: self.maxdepth,

@@ -13,16 +13,20 @@ use super::run::{options, progress};
 use super::stats::{FNV_OFFSET, fnv1a};
 use super::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 
-/// The reference, from the cache when present.
+/// The reference of `scene` at its current resolution (`resolution`, part
+/// of the cache key) with `spp` samples per pixel, from the cache when
+/// present.
 pub fn reference(
     config: &ExperimentConfig,
     scene: &Scene,
     scene_hash: u64,
+    resolution: [u32; 2],
+    spp: u32,
 ) -> Result<(RgbImage, ReferenceInfo)> {
     let key = format!(
         "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
-        config.resolution,
-        config.ref_spp,
+        resolution,
+        spp,
         REF_SAMPLER.as_str(),
         REF_SEED,
         config.max_depth,
@@ -50,14 +54,16 @@ pub fn reference(
     progress(
         config,
         &format!(
-            "rendering reference: {} spp with {}",
-            config.ref_spp,
+            "rendering reference: {}x{}, {} spp with {}",
+            resolution[0],
+            resolution[1],
+            spp,
             REF_SAMPLER.as_str()
         ),
     );
     let out = render(
         scene,
-        &options(config, REF_SAMPLER, REF_SEED, config.ref_spp),
+        &options(config, REF_SAMPLER, REF_SEED, spp),
         &NoProgress,
     )?;
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;

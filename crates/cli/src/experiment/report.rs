@@ -190,7 +190,7 @@ Reference: {} spp with `{}` (seed {REF_SEED}), {}. Wall time {wall:.1} s.\n\n\
 Errors are against the reference; ± is the sample standard deviation over runs. \
 A sampler marked deterministic gave bit-identical images in every run: its runs differ only in time. \
 relMSE is `(x-r)^2/(r^2+0.01)` averaged over pixels and channels; sRGB8 metrics are on 8-bit codes. \
-The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 1..{}).\n\n",
+The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 1..{}, at {}x{} against a {}-spp reference).\n\n",
         config.spp,
         config.runs,
         config.runs,
@@ -202,7 +202,10 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
         } else {
             "rendered now and cached"
         },
-        config.conv_max
+        config.conv_max,
+        config.conv_res[0],
+        config.conv_res[1],
+        config.conv_ref_spp
     );
     md.push_str(&table(results));
     md.push_str("\n## Images\n\nEach render is the seed-0 run; the crop is the central quarter magnified 4x; the heatmap is the per-pixel relative squared error (viridis, scaled to its 99th percentile).\n\n| sampler | render | crop | relative squared error |\n|---|---|---|---|\n");
@@ -231,6 +234,7 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
     }
     md.push_str("\n## The paper's figure\n\n![](figure.png)\n\n## results.json\n\n\
 `{schema, command, version, git_hash, machine: {cpu, cores}, settings, reference: {file, cached, time_s}, \
+convergence_reference: {file, cached, time_s}, \
 samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, srgb8: {mse, relmse, rmse, mae}, \
 relmse_ratio_to_sobol, runs: [{seed, time_s, linear, srgb8}], convergence: [{spp, relmse}], convergence_slope}], \
 threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], wall_time_s}`; every metric summary is `{mean, sd}`.\n");
@@ -321,9 +325,12 @@ fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<Strin
             "max_depth": config.max_depth,
             "threshold": config.threshold,
             "conv_max": config.conv_max,
+            "conv_res": config.conv_res,
+            "conv_ref_spp": config.conv_ref_spp,
             "samplers": names,
         },
         "reference": results.reference,
+        "convergence_reference": results.convergence_reference,
         "samplers": results.samplers,
         "threshold_sweep": results.threshold_sweep,
         "wall_time_s": wall,

@@ -119,6 +119,8 @@ pub struct Results {
     pub samplers: Vec<SamplerResult>,
     /// Reference.
     pub reference: ReferenceInfo,
+    /// Reference of the convergence series (at the convergence resolution).
+    pub convergence_reference: ReferenceInfo,
     /// Threshold sweep of the paper's method.
     pub threshold_sweep: Vec<SweepPoint>,
 }

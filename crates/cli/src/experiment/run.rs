@@ -12,7 +12,7 @@ use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
 use lowdisc_render::scene::Scene;
 
-use super::reference::reference;
+use super::reference::reference as render_reference;
 use super::results::{
     ConvPoint, Images, MetricSummary, Results, RunResult, SamplerResult, fill_ratios,
 };
@@ -115,20 +115,6 @@ fn measure_sampler(
             Some(f) => deterministic &= f.pixels() == out.image.pixels(),
         }
     }
-    let mut convergence = Vec::new();
-    let mut spp = 1;
-    while spp <= config.conv_max {
-        let out = render(scene, &options(config, name, 0, spp), &NoProgress)?;
-        convergence.push(ConvPoint {
-            spp,
-            relmse: error_metrics(&out.image, reference)?.linear.relmse,
-        });
-        spp *= 2;
-    }
-    let pts: Vec<[f64; 2]> = convergence
-        .iter()
-        .map(|c| [f64::from(c.spp), c.relmse])
-        .collect();
     let linear: Vec<ErrorStats> = runs.iter().map(|r| r.linear).collect();
     let srgb8: Vec<ErrorStats> = runs.iter().map(|r| r.srgb8).collect();
     let lin = MetricSummary::of(&linear);
@@ -145,10 +131,35 @@ fn measure_sampler(
         srgb8: MetricSummary::of(&srgb8),
         relmse_ratio_to_sobol: None,
         runs,
-        convergence_slope: log_log_slope(&pts),
-        convergence,
+        convergence_slope: None,
+        convergence: Vec::new(),
     };
     Ok((result, first.context("no runs")?))
+}
+
+/// The convergence series of sampler `name` (seed 0, spp 1, 2, 4, ..
+/// `conv_max`) against `reference`, and its fitted log-log slope.
+fn convergence(
+    config: &ExperimentConfig,
+    scene: &Scene,
+    name: SamplerName,
+    reference: &RgbImage,
+) -> Result<(Vec<ConvPoint>, Option<f64>)> {
+    let mut series = Vec::new();
+    let mut spp = 1;
+    while spp <= config.conv_max {
+        let out = render(scene, &options(config, name, 0, spp), &NoProgress)?;
+        series.push(ConvPoint {
+            spp,
+            relmse: error_metrics(&out.image, reference)?.linear.relmse,
+        });
+        spp *= 2;
+    }
+    let pts: Vec<[f64; 2]> = series
+        .iter()
+        .map(|c| [f64::from(c.spp), c.relmse])
+        .collect();
+    Ok((series, log_log_slope(&pts)))
 }
 
 /// Runs the experiment and writes the report folder.
@@ -156,8 +167,14 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
     let start = Instant::now();
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
-    let (scene, scene_hash) = load(config)?;
-    let (reference, ref_info) = reference(config, &scene, scene_hash)?;
+    let (mut scene, scene_hash) = load(config)?;
+    let (reference, ref_info) = render_reference(
+        config,
+        &scene,
+        scene_hash,
+        config.resolution,
+        config.ref_spp,
+    )?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();
     for (k, &name) in config.samplers.iter().enumerate() {
@@ -185,10 +202,38 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
             config.runs
         ),
     );
+    let threshold_sweep = threshold_sweep(config, &scene, &reference, true)?;
+    // The convergence series: at `conv_res` against their own reference
+    // (the main one when resolution and spp are the same).
+    let same = config.conv_res == config.resolution && config.conv_ref_spp == config.ref_spp;
+    let (conv_reference, conv_ref_info) = if same {
+        (reference.clone(), ref_info.clone())
+    } else {
+        scene.set_resolution(config.conv_res)?;
+        render_reference(
+            config,
+            &scene,
+            scene_hash,
+            config.conv_res,
+            config.conv_ref_spp,
+        )?
+    };
+    for s in &mut samplers {
+        let name = crate::parse::sampler_name(&s.name)?;
+        progress(
+            config,
+            &format!(
+                "convergence of {}: 1 to {} spp at {}x{}",
+                s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
+            ),
+        );
+        (s.convergence, s.convergence_slope) = convergence(config, &scene, name, &conv_reference)?;
+    }
     let results = Results {
         samplers,
         reference: ref_info,
-        threshold_sweep: threshold_sweep(config, &scene, &reference, true)?,
+        convergence_reference: conv_ref_info,
+        threshold_sweep,
     };
     let images = Images { reference, renders };
     report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
