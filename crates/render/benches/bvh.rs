@@ -59,16 +59,17 @@ fn shapes() -> (ShapeSet, String) {
     (set, format!("bmw-m6 ({} files)", files.len()))
 }
 
+/// SplitMix64 from `state`: uniform values in `[0, 1)` with 24 bits.
+fn uniform_stream(mut state: u64) -> impl FnMut() -> f32 {
+    move || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        (lowdisc::hash::mix64(state) >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
 /// Rays from points inside `accel`'s bounds in all directions (SplitMix64).
 fn inner_rays(accel: &Accel, n: usize) -> Vec<Ray> {
-    let mut s = 0x2545f4914f6cdd1du64;
-    let mut next = move || {
-        s = s.wrapping_add(0x9e3779b97f4a7c15);
-        let mut z = s;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58476d1ce4e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d049bb133111eb);
-        ((z ^ (z >> 31)) >> 40) as f32 / (1u64 << 24) as f32
-    };
+    let mut next = uniform_stream(0x2545f4914f6cdd1d);
     let b = accel.bounds();
     (0..n)
         .map(|_| {
@@ -120,14 +121,7 @@ fn bench_cornell(c: &mut Criterion) {
 
 /// Rays from points around the scene towards points inside it (SplitMix64).
 fn rays(accel: &Accel, n: usize) -> Vec<Ray> {
-    let mut s = 0x9e3779b97f4a7c15u64;
-    let mut next = move || {
-        s = s.wrapping_add(0x9e3779b97f4a7c15);
-        let mut z = s;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58476d1ce4e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d049bb133111eb);
-        ((z ^ (z >> 31)) >> 40) as f32 / (1u64 << 24) as f32
-    };
+    let mut next = uniform_stream(0x9e3779b97f4a7c15);
     let b = accel.bounds();
     let (c, r) = b.bounding_sphere();
     (0..n)
