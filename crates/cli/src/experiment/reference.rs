@@ -13,16 +13,15 @@ use super::run::{options, progress};
 use super::stats::{FNV_OFFSET, fnv1a};
 use super::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 
-/// The reference of `scene` at its current resolution (`resolution`, part
-/// of the cache key) with `spp` samples per pixel, from the cache when
-/// present.
+/// The reference of `scene` at its film's resolution (part of the cache
+/// key) with `spp` samples per pixel, from the cache when present.
 pub fn reference(
     config: &ExperimentConfig,
     scene: &Scene,
     scene_hash: u64,
-    resolution: [u32; 2],
     spp: u32,
 ) -> Result<(RgbImage, ReferenceInfo)> {
+    let resolution = scene.film().params.resolution;
     let key = format!(
         "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
         resolution,

@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use lowdisc::catalog::SamplerName;
-use lowdisc_image::{ErrorStats, RgbImage, error_metrics};
+use lowdisc_image::{ErrorStats, ImageFormat, ReadOptions, RgbImage, decode_image, error_metrics};
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
@@ -37,15 +37,21 @@ fn load(config: &ExperimentConfig) -> Result<(Scene, u64)> {
     let read = |p: &std::path::Path| {
         std::fs::read(p).with_context(|| format!("cannot read `{}`", p.display()))
     };
-    if let Some(p) = &config.envmap {
-        hash = fnv1a(hash, &read(p)?);
+    let envmap_bytes = match &config.envmap {
+        Some(p) => Some((p, read(p)?)),
+        None => None,
+    };
+    if let Some((_, bytes)) = &envmap_bytes {
+        hash = fnv1a(hash, bytes);
     }
     let scene = match &config.scene {
         None => {
             hash = fnv1a(hash, scene::SCENE_ID.as_bytes());
-            let sky = match &config.envmap {
-                Some(p) => Some(
-                    lowdisc_image::read_image(p)
+            // The sky is decoded from the bytes already read for the hash.
+            let sky = match &envmap_bytes {
+                Some((p, bytes)) => Some(
+                    ImageFormat::detect(p, bytes)
+                        .and_then(|f| decode_image(bytes, f, &ReadOptions::default()))
                         .with_context(|| format!("cannot read `{}`", p.display()))?,
                 ),
                 None => None,
@@ -168,13 +174,7 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
     let (mut scene, scene_hash) = load(config)?;
-    let (reference, ref_info) = render_reference(
-        config,
-        &scene,
-        scene_hash,
-        config.resolution,
-        config.ref_spp,
-    )?;
+    let (reference, ref_info) = render_reference(config, &scene, scene_hash, config.ref_spp)?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();
     for (k, &name) in config.samplers.iter().enumerate() {
@@ -206,20 +206,16 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
     // The convergence series: at `conv_res` against their own reference
     // (the main one when resolution and spp are the same).
     let same = config.conv_res == config.resolution && config.conv_ref_spp == config.ref_spp;
+    let conv_own;
     let (conv_reference, conv_ref_info) = if same {
-        (reference.clone(), ref_info.clone())
+        (&reference, ref_info.clone())
     } else {
         scene.set_resolution(config.conv_res)?;
-        render_reference(
-            config,
-            &scene,
-            scene_hash,
-            config.conv_res,
-            config.conv_ref_spp,
-        )?
+        let (image, info) = render_reference(config, &scene, scene_hash, config.conv_ref_spp)?;
+        conv_own = image;
+        (&conv_own, info)
     };
-    for s in &mut samplers {
-        let name = crate::parse::sampler_name(&s.name)?;
+    for (s, &name) in samplers.iter_mut().zip(&config.samplers) {
         progress(
             config,
             &format!(
@@ -227,7 +223,7 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
                 s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
             ),
         );
-        (s.convergence, s.convergence_slope) = convergence(config, &scene, name, &conv_reference)?;
+        (s.convergence, s.convergence_slope) = convergence(config, &scene, name, conv_reference)?;
     }
     let results = Results {
         samplers,
