@@ -202,7 +202,7 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
             config.runs
         ),
     );
-    let threshold_sweep = threshold_sweep(config, &scene, &reference, true)?;
+    let threshold_sweep = threshold_sweep(config, &scene, &reference)?;
     // The convergence series: at `conv_res` against their own reference
     // (the main one when resolution and spp are the same).
     let same = config.conv_res == config.resolution && config.conv_ref_spp == config.ref_spp;

@@ -32,19 +32,17 @@ fn pixel_discrepancy(spp: u32, t: f64) -> Result<f64> {
     Ok(lowdisc_metrics::star_discrepancy(&set)?)
 }
 
-/// The sweep over [`THRESHOLDS`]; `renders` is false for a discrepancy-only
-/// sweep (the error fields are then NaN).
+/// The sweep over [`THRESHOLDS`].
 pub fn threshold_sweep(
     config: &ExperimentConfig,
     scene: &Scene,
     reference: &RgbImage,
-    renders: bool,
 ) -> Result<Vec<SweepPoint>> {
     let mut out = Vec::new();
     for t in THRESHOLDS {
         let mut linear = Vec::new();
         let mut srgb8 = Vec::new();
-        for seed in (0..u64::from(config.runs)).filter(|_| renders) {
+        for seed in 0..u64::from(config.runs) {
             let mut o = options(config, SamplerName::PaperRepro, seed, config.spp);
             o.threshold = t;
             let image = render(scene, &o, &NoProgress)?.image;
