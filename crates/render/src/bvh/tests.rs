@@ -141,7 +141,7 @@ fn walk(
     out: &mut Vec<(u32, u32)>,
 ) {
     let inside = |q: &Bounds3| {
-        b.is_none_or(|(n, s)| (0..3).all(|a| n.lo[a][s] <= q.min[a] && n.hi[a][s] >= q.max[a]))
+        b.is_none_or(|(n, s)| (0..3).all(|a| n.lo(a, s) <= q.min[a] && n.hi(a, s) >= q.max[a]))
     };
     if r.count != INTERIOR {
         for k in r.child..r.child + r.count {
@@ -154,11 +154,11 @@ fn walk(
     assert!(n.used() >= 2, "a 4-wide node has at least two children");
     for s in 0..4 {
         if n.count[s] == 0 {
-            assert!(n.lo.iter().all(|l| l[s] == f32::INFINITY));
+            assert!((0..3).all(|a| n.lo(a, s) == f32::INFINITY));
             continue;
         }
         if let Some((p, ps)) = b {
-            assert!((0..3).all(|a| p.lo[a][ps] <= n.lo[a][s] && p.hi[a][ps] >= n.hi[a][s]));
+            assert!((0..3).all(|a| p.lo(a, ps) <= n.lo(a, s) && p.hi(a, ps) >= n.hi(a, s)));
         }
         let c = ChildRef {
             child: n.child[s],

@@ -1,7 +1,7 @@
 //! Closest-hit and any-hit traversal of the 4-wide tree.
 //!
-//! Each [`Node4`] visit tests its four child boxes at once (fixed-size
-//! arrays in straight-line code, which the compiler turns into SIMD), then
+//! Each [`Node4`] visit tests its four child boxes at once (one `wide::f32x4`
+//! register per slab bound), then
 //! continues with the nearest hit child and pushes the others far to near
 //! with their entry distances, so that closest-hit queries skip stacked
 //! subtrees that start beyond the closest hit found since.
@@ -9,6 +9,7 @@
 use super::wide::{ChildRef, INTERIOR, Node4};
 use super::{Bvh, MAX_DEPTH};
 use crate::math::{Ray, gamma};
+use wide::{CmpLe, f32x4};
 
 /// Stack size for trees of at most `MICRO_STACK / 3` levels (small scenes:
 /// zeroing it per ray costs a few stores instead of a `memset` call).
@@ -23,11 +24,43 @@ const LARGE_STACK: usize = 3 * MAX_DEPTH;
 /// Widening of slab and query distances against rounding (pbrt's `1 + 2γ(3)`).
 const WIDEN: f32 = 1.0 + 2.0 * gamma(3);
 
-/// Per-ray constants of the slab test.
+/// Per-ray constants of the slab test, splatted across the four slots.
 struct RayInv {
-    o: [f32; 3],
-    inv: [f32; 3],
-    neg: [bool; 3],
+    o: [f32x4; 3],
+    inv: [f32x4; 3],
+    /// Per axis, the side of a box the ray enters by (1 for the upper
+    /// corner when the direction is negative).
+    near: [usize; 3],
+}
+
+/// `if a > b { a } else { b }` per lane: a NaN in `a` keeps `b`.
+#[inline(always)]
+fn max_gt(a: f32x4, b: f32x4) -> f32x4 {
+    // MAXPS returns its second operand unless the first is greater.
+    #[cfg(target_feature = "sse")]
+    {
+        a.fast_max(b)
+    }
+    #[cfg(not(target_feature = "sse"))]
+    {
+        use wide::CmpGt;
+        a.cmp_gt(b).blend(a, b)
+    }
+}
+
+/// `if a < b { a } else { b }` per lane: a NaN in `a` keeps `b`.
+#[inline(always)]
+fn min_lt(a: f32x4, b: f32x4) -> f32x4 {
+    // MINPS returns its second operand unless the first is smaller.
+    #[cfg(target_feature = "sse")]
+    {
+        a.fast_min(b)
+    }
+    #[cfg(not(target_feature = "sse"))]
+    {
+        use wide::CmpLt;
+        a.cmp_lt(b).blend(a, b)
+    }
 }
 
 impl RayInv {
@@ -35,11 +68,11 @@ impl RayInv {
     fn new(ray: &Ray) -> Self {
         let inv = [1.0 / ray.d.x, 1.0 / ray.d.y, 1.0 / ray.d.z];
         // Sign of the inverse, so that -0.0 directions count as negative.
-        let neg = inv.map(f32::is_sign_negative);
+        let near = inv.map(|i| usize::from(i.is_sign_negative()));
         RayInv {
-            o: [ray.o.x, ray.o.y, ray.o.z],
-            inv,
-            neg,
+            o: [ray.o.x, ray.o.y, ray.o.z].map(f32x4::splat),
+            inv: inv.map(f32x4::splat),
+            near,
         }
     }
 
@@ -47,31 +80,24 @@ impl RayInv {
     /// each box's entry distance and a bit mask of the boxes hit. `far` is
     /// widened by `1 + 2γ(3)` (pbrt) so rounding never culls a box the ray
     /// touches; a NaN slab bound (`0 * inf` for a ray in a slab plane) is
-    /// ignored, i.e. the ray counts as inside that slab.
+    /// ignored, i.e. the ray counts as inside that slab. The four slots are
+    /// tested in one SIMD register; every lane does the scalar test's
+    /// operations in the scalar test's order.
     #[inline(always)]
     fn hits4(&self, n: &Node4, t_max: f32) -> ([f32; 4], u32) {
-        let mut t0 = [0.0f32; 4];
-        let mut t1 = [t_max; 4];
+        let mut t0 = f32x4::ZERO;
+        let mut t1 = f32x4::splat(t_max);
+        let widen = f32x4::splat(WIDEN);
         for a in 0..3 {
-            let (lo, hi) = if self.neg[a] {
-                (&n.hi[a], &n.lo[a])
-            } else {
-                (&n.lo[a], &n.hi[a])
-            };
-            let (o, inv) = (self.o[a], self.inv[a]);
-            for s in 0..4 {
-                let near = (lo[s] - o) * inv;
-                let far = (hi[s] - o) * inv * WIDEN;
-                // `x > y` is false for NaN: NaN bounds leave t0, t1 alone.
-                t0[s] = if near > t0[s] { near } else { t0[s] };
-                t1[s] = if far < t1[s] { far } else { t1[s] };
-            }
+            let side = self.near[a] & 1;
+            let (lo, hi) = (n.bounds[side][a], n.bounds[side ^ 1][a]);
+            let near = (f32x4::from(lo) - self.o[a]) * self.inv[a];
+            let far = (f32x4::from(hi) - self.o[a]) * self.inv[a] * widen;
+            t0 = max_gt(near, t0);
+            t1 = min_lt(far, t1);
         }
-        let mut mask = 0;
-        for s in 0..4 {
-            mask |= ((t0[s] <= t1[s]) as u32) << s;
-        }
-        (t0, mask)
+        let mask = t0.cmp_le(t1).move_mask() as u32;
+        (t0.to_array(), mask)
     }
 }
 
@@ -257,5 +283,19 @@ impl Bvh {
                 None => return false,
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The slab test relies on a NaN bound leaving `t0`/`t1` alone.
+    #[test]
+    fn lane_min_max_keep_the_second_operand_for_nan() {
+        let a = f32x4::from([f32::NAN, 2.0, -1.0, f32::INFINITY]);
+        let b = f32x4::from([1.0, 1.0, 0.0, 5.0]);
+        assert_eq!(max_gt(a, b).to_array(), [1.0, 2.0, 0.0, f32::INFINITY]);
+        assert_eq!(min_lt(a, b).to_array(), [1.0, 1.0, -1.0, 5.0]);
     }
 }

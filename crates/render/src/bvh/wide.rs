@@ -19,13 +19,14 @@ pub const INTERIOR: u32 = u32::MAX;
 /// `count[i]` primitives starting at leaf-order position `child[i]`. Unused
 /// slots are leaves of zero primitives with an empty box (`lo = +inf`,
 /// `hi = -inf`), so no finite ray reaches them and reaching them costs nothing.
+/// The corners sit in one array indexed by side (`0` lower, `1` upper), so
+/// that the slab test picks a ray's near side by index, without a branch.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(C, align(64))]
 pub struct Node4 {
-    /// Lower box corners, `lo[axis][slot]`.
-    pub lo: [[f32; 4]; 3],
-    /// Upper box corners, `hi[axis][slot]`.
-    pub hi: [[f32; 4]; 3],
+    /// Box corners, `bounds[side][axis][slot]`: side 0 the lower corner,
+    /// side 1 the upper.
+    pub bounds: [[[f32; 4]; 3]; 2],
     /// Per slot: node index (interior) or first primitive (leaf).
     pub child: [u32; 4],
     /// Per slot: primitive count of a leaf, or [`INTERIOR`].
@@ -34,11 +35,19 @@ pub struct Node4 {
 
 impl Node4 {
     const EMPTY: Node4 = Node4 {
-        lo: [[f32::INFINITY; 4]; 3],
-        hi: [[f32::NEG_INFINITY; 4]; 3],
+        bounds: [[[f32::INFINITY; 4]; 3], [[f32::NEG_INFINITY; 4]; 3]],
         child: [0; 4],
         count: [0; 4],
     };
+
+    /// Lower corner of slot `s` on `axis`.
+    pub fn lo(&self, axis: usize, s: usize) -> f32 {
+        self.bounds[0][axis][s]
+    }
+    /// Upper corner of slot `s` on `axis`.
+    pub fn hi(&self, axis: usize, s: usize) -> f32 {
+        self.bounds[1][axis][s]
+    }
 
     /// Number of used slots (interior or leaves with primitives).
     pub fn used(&self) -> usize {
@@ -124,8 +133,8 @@ fn collapse_node(bin: &[Node], i: usize, out: &mut Vec<Node4>) -> (u32, usize) {
     for (s, &c) in kids[..n].iter().enumerate() {
         let b = &bin[c];
         for a in 0..3 {
-            node.lo[a][s] = b.min[a];
-            node.hi[a][s] = b.max[a];
+            node.bounds[0][a][s] = b.min[a];
+            node.bounds[1][a][s] = b.max[a];
         }
         if b.is_leaf() {
             node.child[s] = b.offset;

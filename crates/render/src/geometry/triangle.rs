@@ -6,6 +6,7 @@ use super::{PrimHit, ShapeSample, SurfaceHit};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_triangle;
 use crate::math::{Bounds3, Frame, Normal3, Point2, Point3, Ray, Transform, Vec3};
+use wide::{CmpGe, CmpGt, CmpLe, CmpLt, CmpNe, f32x4};
 
 /// A triangle mesh with vertices already in world space (as pbrt does, the
 /// object-to-world transform is applied once at construction).
@@ -299,55 +300,56 @@ impl Tri4 {
             .map(|pv| Point3::new(pv[0][lane], pv[1][lane], pv[2][lane]))
     }
 
-    /// [`intersect_triangle`] on all four lanes at once (straight-line code
-    /// the compiler vectorises), with the same arithmetic per lane, so the
-    /// results are bit-identical to it.
+    /// [`intersect_triangle`] on all four lanes at once, one `wide::f32x4`
+    /// register per coordinate, with the same arithmetic in the same order
+    /// per lane (no fused multiply-adds), so the results are bit-identical
+    /// to it.
     #[inline(always)]
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Hits4 {
-        let (o, d) = (ray.o, ray.d);
-        let [p0, p1, p2] = &self.p;
-        let mut h = Hits4 {
-            t: [0.0; 4],
-            u: [0.0; 4],
-            v: [0.0; 4],
-            mask: 0,
-        };
-        let mut ok = [false; 4];
-        for l in 0..4 {
-            let e1 = Vec3::new(
-                p1[0][l] - p0[0][l],
-                p1[1][l] - p0[1][l],
-                p1[2][l] - p0[2][l],
-            );
-            let e2 = Vec3::new(
-                p2[0][l] - p0[0][l],
-                p2[1][l] - p0[1][l],
-                p2[2][l] - p0[2][l],
-            );
-            let pvec = d.cross(e2);
-            let det = e1.dot(pvec);
-            let inv = 1.0 / det;
-            let tvec = Vec3::new(o.x - p0[0][l], o.y - p0[1][l], o.z - p0[2][l]);
-            let u = tvec.dot(pvec) * inv;
-            let qvec = tvec.cross(e1);
-            let v = d.dot(qvec) * inv;
-            let t = e2.dot(qvec) * inv;
-            // Non-short-circuit `&` keeps this branch-free (vectorisable).
-            #[allow(clippy::manual_range_contains)]
-            let hit = (det != 0.0)
-                & (det.abs() < f32::INFINITY)
-                & (u >= 0.0)
-                & (u <= 1.0)
-                & (v >= 0.0)
-                & (u + v <= 1.0)
-                & (t > 0.0)
-                & (t < t_max);
-            ok[l] = hit;
-            (h.t[l], h.u[l], h.v[l]) = (t, u, v);
+        let splat = |v: Vec3| [v.x, v.y, v.z].map(f32x4::splat);
+        let (o, d) = (splat(ray.o), splat(ray.d));
+        let [p0, p1, p2] = self.p.map(|pv| pv.map(f32x4::from));
+        let sub = |a: [f32x4; 3], b: [f32x4; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+        let e1 = sub(p1, p0);
+        let e2 = sub(p2, p0);
+        let pvec = cross4(d, e2);
+        let det = dot4(e1, pvec);
+        let inv = f32x4::ONE / det;
+        let tvec = sub(o, p0);
+        let u = dot4(tvec, pvec) * inv;
+        let qvec = cross4(tvec, e1);
+        let v = dot4(d, qvec) * inv;
+        let t = dot4(e2, qvec) * inv;
+        let zero = f32x4::ZERO;
+        let hit = det.cmp_ne(zero)
+            & det.abs().cmp_lt(f32x4::splat(f32::INFINITY))
+            & u.cmp_ge(zero)
+            & u.cmp_le(f32x4::ONE)
+            & v.cmp_ge(zero)
+            & (u + v).cmp_le(f32x4::ONE)
+            & t.cmp_gt(zero)
+            & t.cmp_lt(f32x4::splat(t_max));
+        Hits4 {
+            t: t.to_array(),
+            u: u.to_array(),
+            v: v.to_array(),
+            mask: hit.move_mask() as u32,
         }
-        for (l, &k) in ok.iter().enumerate() {
-            h.mask |= (k as u32) << l;
-        }
-        h
     }
+}
+
+/// [`Vec3::cross`] per lane, in its operation order.
+#[inline(always)]
+fn cross4(a: [f32x4; 3], b: [f32x4; 3]) -> [f32x4; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// [`Vec3::dot`] per lane, in its operation order.
+#[inline(always)]
+fn dot4(a: [f32x4; 3], b: [f32x4; 3]) -> f32x4 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
