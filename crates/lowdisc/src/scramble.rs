@@ -8,9 +8,11 @@
 //! * [`Randomize::Xor`] is a random digital shift (XOR with a per-dimension word).
 //! * [`Randomize::Owen`] is exact nested uniform scrambling: digit `b` is flipped
 //!   by a random bit drawn from a hash of the seed and digits `0..b`.
-//! * [`Randomize::FastOwen`] is the Laine-Karras hash on bit-reversed words
-//!   with the constants of Burley (2020), "Practical Hash-based Owen
-//!   Scrambling": a nested scramble, though not an exactly uniform one.
+//! * [`Randomize::FastOwen`] is a Laine-Karras-style hash on bit-reversed
+//!   words (Burley 2020, "Practical Hash-based Owen Scrambling", with the
+//!   improved hash of N. Vegdahl 2021, "Building a Better LK Hash"): a
+//!   nested scramble, though not an exactly uniform one. Its multiplier
+//!   `(seed >> 16) | 1` makes a rare seed with small upper bits weak.
 //!
 //! All four keep a digital net a digital net: the first `2^m` Sobol points
 //! of dimensions 0 and 1 remain a (0,m,2)-net (tested in `sobol::tests`).
@@ -41,7 +43,7 @@ pub enum Randomize {
         /// Seed; combined with the dimension.
         seed: u64,
     },
-    /// Fast hash-based Owen scrambling (Laine-Karras / Burley), seeded.
+    /// Fast hash-based Owen scrambling (Laine-Karras / Burley / Vegdahl), seeded.
     FastOwen {
         /// Seed; combined with the dimension.
         seed: u64,
@@ -217,7 +219,8 @@ impl OwenKey {
 }
 
 /// Fast hash-based Owen scrambling (Laine-Karras style permutation of a
-/// bit-reversed word, with Burley's 2020 constants).
+/// bit-reversed word: the hash of N. Vegdahl, "Building a Better LK Hash",
+/// 2021, also used by the `sobol_burley` crate and Blender Cycles).
 ///
 /// On the reversed word, a bit only influences higher bits, i.e. in the
 /// original word each digit's flip depends only on earlier digits, which is
