@@ -117,6 +117,7 @@ fn directly_seen_light_covers_each_pixel_exactly() {
     };
     let out = render(&scene, &opts, &NoProgress).unwrap();
     let cov = coverage(w, h, 0.0);
+    let grown = coverage(w, h, 1.0);
     let partial = cov.iter().filter(|&&c| c > 0.0 && c < 1.0).count();
     assert!(partial >= 20, "only {partial} pixels on the outline");
     for (c, &l) in CORNELL_LIGHT_RGB.iter().enumerate() {
@@ -138,7 +139,6 @@ fn directly_seen_light_covers_each_pixel_exactly() {
         );
         // The test can fail: a light 1 mm larger on each side (its outline
         // ~0.05 px further out) is told apart.
-        let grown = coverage(w, h, 1.0);
         assert!(worst(&img, &grown) > 0.03, "channel {c}: 1 mm not resolved");
     }
 }

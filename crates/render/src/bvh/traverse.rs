@@ -1,10 +1,10 @@
 //! Closest-hit and any-hit traversal of the 4-wide tree.
 //!
 //! Each [`Node4`] visit tests its four child boxes at once (one `wide::f32x4`
-//! register per slab bound), then
-//! continues with the nearest hit child and pushes the others far to near
-//! with their entry distances, so that closest-hit queries skip stacked
-//! subtrees that start beyond the closest hit found since.
+//! register per slab bound), then continues with the nearest hit child and
+//! pushes the others far to near with their entry distances, so that
+//! closest-hit queries skip stacked subtrees that start beyond the closest
+//! hit found since.
 
 use super::wide::{ChildRef, INTERIOR, Node4};
 use super::{Bvh, MAX_DEPTH};
@@ -89,6 +89,7 @@ impl RayInv {
         let mut t1 = f32x4::splat(t_max);
         let widen = f32x4::splat(WIDEN);
         for a in 0..3 {
+            // `& 1` lets the compiler drop the bounds checks of both indices.
             let side = self.near[a] & 1;
             let (lo, hi) = (n.bounds[side][a], n.bounds[side ^ 1][a]);
             let near = (f32x4::from(lo) - self.o[a]) * self.inv[a];
