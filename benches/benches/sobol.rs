@@ -2,7 +2,7 @@
 //!
 //! * `sample_1d`: one value per call, over the fixed `(index, dimension)` list
 //!   of [`lowdisc_benches::pairs_1d`]. lowdisc's `sample_randomized` with each
-//!   [`Randomize`], the paper's permutation (reproducible and literal), and
+//!   [`RandomizeStrategy`], the paper's permutation (reproducible and literal), and
 //!   `sobol_burley::sample`. `sobol_burley` returns an `f32` and, besides the
 //!   Owen scramble of the value, shuffles the index (an Owen scramble of the
 //!   index); the like-for-like lowdisc entry is `fast-owen-f32`: fast Owen
@@ -23,7 +23,7 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use lowdisc::Randomize;
+use lowdisc::RandomizeStrategy;
 use lowdisc::paper::{PaperLiteral, paper_reproducible};
 use lowdisc::sobol::{GrayCodeBatch, sample_4d, sample_randomized};
 use lowdisc_benches::clock::ThreadCpuTime;
@@ -33,13 +33,8 @@ use lowdisc_benches::{BATCH_VALUES, BATCH_WIDTHS, PAIRS, pairs_1d, pairs_4d};
 const SEED: u64 = 0x1234_5678;
 
 /// The randomizations of `sample_randomized`, by benchmark name.
-fn strategies() -> [(&'static str, Randomize); 4] {
-    [
-        ("none", Randomize::None),
-        ("xor", Randomize::Xor { seed: SEED }),
-        ("owen", Randomize::Owen { seed: SEED }),
-        ("fast-owen", Randomize::FastOwen { seed: SEED }),
-    ]
+fn strategies() -> [(&'static str, RandomizeStrategy); 4] {
+    RandomizeStrategy::ALL.map(|r| (r.name(), r))
 }
 
 fn sample_1d(c: &mut Criterion<ThreadCpuTime>) {
@@ -49,18 +44,20 @@ fn sample_1d(c: &mut Criterion<ThreadCpuTime>) {
     for (name, randomize) in strategies() {
         group.bench_function(BenchmarkId::new("lowdisc", name), |b| {
             b.iter(|| {
-                let randomize = black_box(randomize);
+                let (randomize, seed) = black_box((randomize, SEED));
                 for &(index, dim) in black_box(&pairs) {
-                    black_box(sample_randomized(index, dim, randomize));
+                    black_box(sample_randomized(index, dim, randomize, seed));
                 }
             })
         });
     }
     group.bench_function(BenchmarkId::new("lowdisc", "fast-owen-f32"), |b| {
         b.iter(|| {
-            let randomize = black_box(Randomize::FastOwen { seed: SEED });
+            let (randomize, seed) = black_box((RandomizeStrategy::FastOwen, SEED));
             for &(index, dim) in black_box(&pairs) {
-                black_box(lowdisc::to_f32(sample_randomized(index, dim, randomize)));
+                black_box(lowdisc::to_f32(sample_randomized(
+                    index, dim, randomize, seed,
+                )));
             }
         })
     });
@@ -98,18 +95,18 @@ fn sample_4d_group(c: &mut Criterion<ThreadCpuTime>) {
     for (name, randomize) in strategies() {
         group.bench_function(BenchmarkId::new("lowdisc", name), |b| {
             b.iter(|| {
-                let randomize = black_box(randomize);
+                let (randomize, seed) = black_box((randomize, SEED));
                 for &(index, set) in black_box(&pairs) {
-                    black_box(sample_4d(index, 4 * set, randomize));
+                    black_box(sample_4d(index, 4 * set, randomize, seed));
                 }
             })
         });
     }
     group.bench_function(BenchmarkId::new("lowdisc", "fast-owen-f32"), |b| {
         b.iter(|| {
-            let randomize = black_box(Randomize::FastOwen { seed: SEED });
+            let (randomize, seed) = black_box((RandomizeStrategy::FastOwen, SEED));
             for &(index, set) in black_box(&pairs) {
-                black_box(sample_4d(index, 4 * set, randomize).map(lowdisc::to_f32));
+                black_box(sample_4d(index, 4 * set, randomize, seed).map(lowdisc::to_f32));
             }
         })
     });

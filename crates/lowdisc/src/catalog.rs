@@ -29,7 +29,7 @@ use crate::pixel::{
     GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
     Sampler, StratifiedSampler, ZSobolSampler,
 };
-use crate::{Error, Randomize};
+use crate::{Error, RandomizeStrategy};
 
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
 
@@ -132,13 +132,13 @@ impl SamplerName {
         )
     }
 
-    /// The randomization of the `sobol*` names (`None` for others).
-    pub fn sobol_randomize(self, seed: u64) -> Option<Randomize> {
+    /// The randomization strategy of the `sobol*` names (`None` for others).
+    pub fn sobol_strategy(self) -> Option<RandomizeStrategy> {
         match self {
-            SamplerName::Sobol => Some(Randomize::None),
-            SamplerName::SobolXor => Some(Randomize::Xor { seed }),
-            SamplerName::SobolOwen => Some(Randomize::Owen { seed }),
-            SamplerName::SobolFastOwen => Some(Randomize::FastOwen { seed }),
+            SamplerName::Sobol => Some(RandomizeStrategy::None),
+            SamplerName::SobolXor => Some(RandomizeStrategy::Xor),
+            SamplerName::SobolOwen => Some(RandomizeStrategy::Owen),
+            SamplerName::SobolFastOwen => Some(RandomizeStrategy::FastOwen),
             _ => None,
         }
     }
@@ -234,7 +234,7 @@ impl SamplerConfig {
             | SamplerName::SobolXor
             | SamplerName::SobolOwen
             | SamplerName::SobolFastOwen => {
-                let r = self.name.sobol_randomize(0).unwrap_or_default();
+                let r = self.name.sobol_strategy().unwrap_or_default();
                 global(GlobalSobolMode::Randomize(r))
             }
             SamplerName::Paper => global(GlobalSobolMode::PaperLiteral {
@@ -246,11 +246,10 @@ impl SamplerConfig {
                 all_dims,
             }),
             SamplerName::PaddedSobol => {
-                PaddedSobolSampler::new(spp, Randomize::Owen { seed: 0 }, seed).map(Sampler::from)
+                PaddedSobolSampler::new(spp, RandomizeStrategy::Owen, seed).map(Sampler::from)
             }
             SamplerName::ZSobol => {
-                ZSobolSampler::new(spp, res, Randomize::FastOwen { seed: 0 }, seed)
-                    .map(Sampler::from)
+                ZSobolSampler::new(spp, res, RandomizeStrategy::FastOwen, seed).map(Sampler::from)
             }
         }
     }

@@ -38,7 +38,7 @@ pub mod sobol;
 pub mod stratified;
 
 pub use error::Error;
-pub use scramble::Randomize;
+pub use scramble::RandomizeStrategy;
 
 /// The largest `f32` below 1.
 pub const ONE_MINUS_EPSILON_F32: f32 = 1.0 - f32::EPSILON / 2.0;

@@ -1,14 +1,16 @@
-//! Randomizations of digit words, in the spirit of pbrt-v4's
-//! `RandomizeStrategy`: one small enum handed to the sequence routines.
+//! Randomizations of digit words, after pbrt-v4's `RandomizeStrategy`: a
+//! small seedless enum, [`RandomizeStrategy`], handed to the sequence
+//! routines together with a seed.
 //!
 //! Each strategy maps a 32-bit digit word (bit 31 = first digit) to another,
 //! with a seed that is first combined with the dimension, so every dimension
 //! gets its own independent scramble:
-//! * [`Randomize::None`] is the identity.
-//! * [`Randomize::Xor`] is a random digital shift (XOR with a per-dimension word).
-//! * [`Randomize::Owen`] is exact nested uniform scrambling: digit `b` is flipped
-//!   by a random bit drawn from a hash of the seed and digits `0..b`.
-//! * [`Randomize::FastOwen`] is a Laine-Karras-style hash on bit-reversed
+//! * [`RandomizeStrategy::None`] is the identity.
+//! * [`RandomizeStrategy::Xor`] is a random digital shift (XOR with a
+//!   per-dimension word).
+//! * [`RandomizeStrategy::Owen`] is exact nested uniform scrambling: digit `b`
+//!   is flipped by a random bit drawn from a hash of the seed and digits `0..b`.
+//! * [`RandomizeStrategy::FastOwen`] is a Laine-Karras-style hash on bit-reversed
 //!   words (Burley 2020, "Practical Hash-based Owen Scrambling", with the
 //!   improved hash of N. Vegdahl 2021, "Building a Better LK Hash"): a
 //!   nested scramble, though not an exactly uniform one. Its multiplier
@@ -27,84 +29,85 @@ use crate::hash::{hash2, mix64};
 /// [`dimension_seeds_4`] and the Owen scramble unroll (tests check they agree).
 const HASH_INIT: u64 = 0x9e37_79b9_7f4a_7c15;
 
-/// How digit words are randomized.
+/// How digit words are randomized: the strategy alone, without a seed (as
+/// pbrt-v4's `RandomizeStrategy`). The seed is passed once to whatever holds
+/// the strategy (a sampler, [`ScrambleCache`]) or to each call of
+/// [`RandomizeStrategy::apply`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum Randomize {
-    /// The sequence as defined (deterministic).
+pub enum RandomizeStrategy {
+    /// The sequence as defined (deterministic; the seed is not used).
     #[default]
     None,
-    /// Random digital shift (XOR scrambling), seeded.
-    Xor {
-        /// Seed; combined with the dimension.
-        seed: u64,
-    },
-    /// Exact Owen (nested uniform) scrambling, seeded. 32 hashes per value.
-    Owen {
-        /// Seed; combined with the dimension.
-        seed: u64,
-    },
-    /// Fast hash-based Owen scrambling (Laine-Karras / Burley / Vegdahl), seeded.
-    FastOwen {
-        /// Seed; combined with the dimension.
-        seed: u64,
-    },
+    /// Random digital shift (XOR scrambling).
+    Xor,
+    /// Exact Owen (nested uniform) scrambling. 32 hashes per value.
+    Owen,
+    /// Fast hash-based Owen scrambling (Laine-Karras / Burley / Vegdahl).
+    FastOwen,
 }
 
-impl Randomize {
-    /// Randomizes digit word `word` of dimension `dim`.
+impl RandomizeStrategy {
+    /// Every strategy, the identity first.
+    pub const ALL: [RandomizeStrategy; 4] = [
+        RandomizeStrategy::None,
+        RandomizeStrategy::Xor,
+        RandomizeStrategy::Owen,
+        RandomizeStrategy::FastOwen,
+    ];
+
+    /// Randomizes digit word `word` of dimension `dim` under `seed` (the
+    /// seed is combined with the dimension by [`dimension_seed`]).
     #[inline]
-    pub fn apply(self, word: u32, dim: u32) -> u32 {
+    pub fn apply(self, word: u32, seed: u64, dim: u32) -> u32 {
         match self {
-            Randomize::None => word,
-            Randomize::Xor { seed } | Randomize::Owen { seed } | Randomize::FastOwen { seed } => {
-                self.apply_dimension_seed(word, dimension_seed(seed, dim))
-            }
+            RandomizeStrategy::None => word,
+            _ => self.apply_dimension_seed(word, dimension_seed(seed, dim)),
         }
     }
 
-    /// The scramble of [`Randomize::apply`] with the per-dimension seed
-    /// already derived: `self.apply(word, dim)` equals
-    /// `self.apply_dimension_seed(word, dimension_seed(seed, dim))` (the
-    /// seed inside `self` is ignored). Lets callers that scramble many words
-    /// of one dimension hash the seed once.
+    /// The scramble of [`RandomizeStrategy::apply`] with the per-dimension
+    /// seed already derived: `self.apply(word, seed, dim)` equals
+    /// `self.apply_dimension_seed(word, dimension_seed(seed, dim))`. Lets
+    /// callers that scramble many words of one dimension hash the seed once.
     #[inline(always)]
     pub fn apply_dimension_seed(self, word: u32, dimension_seed: u32) -> u32 {
         match self {
-            Randomize::None => word,
-            Randomize::Xor { .. } => word ^ dimension_seed,
-            Randomize::Owen { .. } => owen_scramble(word, dimension_seed),
-            Randomize::FastOwen { .. } => fast_owen_scramble(word, dimension_seed),
+            RandomizeStrategy::None => word,
+            RandomizeStrategy::Xor => word ^ dimension_seed,
+            RandomizeStrategy::Owen => owen_scramble(word, dimension_seed),
+            RandomizeStrategy::FastOwen => fast_owen_scramble(word, dimension_seed),
         }
     }
 
-    /// [`Randomize::apply_dimension_seed`] of `reversed.reverse_bits()`:
-    /// the fast Owen scramble works on bit-reversed words, so a caller that
-    /// keeps its words reversed saves a reversal.
+    /// [`RandomizeStrategy::apply_dimension_seed`] of
+    /// `reversed.reverse_bits()`: the fast Owen scramble works on
+    /// bit-reversed words, so a caller that keeps its words reversed saves a
+    /// reversal.
     #[inline(always)]
     pub fn apply_dimension_seed_reversed(self, reversed: u32, dimension_seed: u32) -> u32 {
         match self {
-            Randomize::FastOwen { .. } => fast_owen_scramble_reversed(reversed, dimension_seed),
+            RandomizeStrategy::FastOwen => fast_owen_scramble_reversed(reversed, dimension_seed),
             r => r.apply_dimension_seed(reversed.reverse_bits(), dimension_seed),
         }
     }
 
     /// Randomizes the digit words of dimensions `dim..dim + 4` at once: lane
-    /// `k` equals `self.apply(words[k], dim + k)`. The hashing of the seed is
-    /// shared between the lanes and the fast Owen scramble runs on all four
-    /// lanes together (written for the compiler's vectoriser).
+    /// `k` equals `self.apply(words[k], seed, dim + k)`. The hashing of the
+    /// seed is shared between the lanes and the fast Owen scramble runs on
+    /// all four lanes together (written for the compiler's vectoriser).
     #[inline(always)]
-    pub fn apply_4(self, words: [u32; 4], dim: u32) -> [u32; 4] {
+    pub fn apply_4(self, words: [u32; 4], seed: u64, dim: u32) -> [u32; 4] {
         match self {
-            Randomize::None => words,
-            Randomize::Xor { seed } => {
+            RandomizeStrategy::None => words,
+            RandomizeStrategy::Xor => {
                 let seeds = dimension_seeds_4(seed, dim);
                 core::array::from_fn(|k| words[k] ^ seeds[k])
             }
-            Randomize::Owen { seed } => {
+            RandomizeStrategy::Owen => {
                 let seeds = dimension_seeds_4(seed, dim);
                 core::array::from_fn(|k| owen_scramble(words[k], seeds[k]))
             }
-            Randomize::FastOwen { seed } => {
+            RandomizeStrategy::FastOwen => {
                 fast_owen_scramble_4(words, dimension_seeds_4(seed, dim))
             }
         }
@@ -113,10 +116,10 @@ impl Randomize {
     /// A short name: `none`, `xor`, `owen` or `fast-owen`.
     pub fn name(self) -> &'static str {
         match self {
-            Randomize::None => "none",
-            Randomize::Xor { .. } => "xor",
-            Randomize::Owen { .. } => "owen",
-            Randomize::FastOwen { .. } => "fast-owen",
+            RandomizeStrategy::None => "none",
+            RandomizeStrategy::Xor => "xor",
+            RandomizeStrategy::Owen => "owen",
+            RandomizeStrategy::FastOwen => "fast-owen",
         }
     }
 }
@@ -312,20 +315,13 @@ mod tests {
     #[test]
     fn apply_dimension_seed_equals_apply() {
         for seed in [0u64, 9, u64::MAX] {
-            for r in [
-                Randomize::None,
-                Randomize::Xor { seed },
-                Randomize::Owen { seed },
-                Randomize::FastOwen { seed },
-            ] {
+            for r in RandomizeStrategy::ALL {
                 for (dim, word) in [(0u32, 0u32), (1, 0x8000_0001), (77, 0xdead_beef)] {
                     let s = dimension_seed(seed, dim);
-                    assert_eq!(r.apply_dimension_seed(word, s), r.apply(word, dim));
+                    let want = r.apply(word, seed, dim);
+                    assert_eq!(r.apply_dimension_seed(word, s), want);
                     let reversed = word.reverse_bits();
-                    assert_eq!(
-                        r.apply_dimension_seed_reversed(reversed, s),
-                        r.apply(word, dim)
-                    );
+                    assert_eq!(r.apply_dimension_seed_reversed(reversed, s), want);
                 }
             }
         }
@@ -345,16 +341,11 @@ mod tests {
                 assert_eq!(s, dimension_seed(seed, dim.wrapping_add(k as u32)));
                 assert_eq!(f, fast_owen_scramble(words[k], s));
             }
-            for r in [
-                Randomize::None,
-                Randomize::Xor { seed },
-                Randomize::Owen { seed },
-                Randomize::FastOwen { seed },
-            ] {
+            for r in RandomizeStrategy::ALL {
                 let d = dim.min(u32::MAX - 3);
-                let four = r.apply_4(words, d);
+                let four = r.apply_4(words, seed, d);
                 for (k, (&v, &w)) in four.iter().zip(&words).enumerate() {
-                    assert_eq!(v, r.apply(w, d + k as u32));
+                    assert_eq!(v, r.apply(w, seed, d + k as u32));
                 }
             }
         }

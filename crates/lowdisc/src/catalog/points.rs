@@ -28,9 +28,9 @@ use super::{SamplerConfig, SamplerName};
 use crate::halton::{self, Halton, HaltonRandomize};
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
-use crate::pixel::{PaddedSobolSampler, PixelSampler, ZSobolSampler};
+use crate::pixel::{PaddedSobolSampler, WordSampler, ZSobolSampler};
 use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
-use crate::{Error, Randomize, stratified};
+use crate::{Error, RandomizeStrategy, stratified};
 
 /// The most words one call may return (`n * dims.len()`), 1 GiB of output.
 pub const MAX_POINT_WORDS: u64 = 1 << 28;
@@ -102,9 +102,12 @@ pub fn generate_points(
         | SamplerName::SobolXor
         | SamplerName::SobolOwen
         | SamplerName::SobolFastOwen => {
-            let r = name.sobol_randomize(seed).unwrap_or(Randomize::None);
+            let r = name.sobol_strategy().unwrap_or_default();
             for k in 0..n {
-                out.extend(dims.clone().map(|d| sample_randomized(index(k), d, r)));
+                out.extend(
+                    dims.clone()
+                        .map(|d| sample_randomized(index(k), d, r, seed)),
+                );
             }
         }
         SamplerName::Paper => {
@@ -154,11 +157,11 @@ pub fn generate_points(
             }
         }
         SamplerName::PaddedSobol => {
-            let mut s = PaddedSobolSampler::new(n, Randomize::Owen { seed: 0 }, seed)?;
+            let mut s = PaddedSobolSampler::new(n, RandomizeStrategy::Owen, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
         SamplerName::ZSobol => {
-            let mut s = ZSobolSampler::new(n, [1, 1], Randomize::FastOwen { seed: 0 }, seed)?;
+            let mut s = ZSobolSampler::new(n, [1, 1], RandomizeStrategy::FastOwen, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
     }
@@ -170,35 +173,11 @@ fn word_of(x: f64) -> u32 {
     (x * 4_294_967_296.0) as u32
 }
 
-/// Word-level access to the hashed pixel samplers.
-trait WordSampler: PixelSampler {
-    fn pixel_words(&mut self) -> [u32; 2];
-    fn words_2d(&mut self) -> [u32; 2];
-}
-
-impl WordSampler for PaddedSobolSampler {
-    fn pixel_words(&mut self) -> [u32; 2] {
-        self.get_pixel_2d_words()
-    }
-    fn words_2d(&mut self) -> [u32; 2] {
-        self.get_2d_words()
-    }
-}
-
-impl WordSampler for ZSobolSampler {
-    fn pixel_words(&mut self) -> [u32; 2] {
-        self.get_pixel_2d_words()
-    }
-    fn words_2d(&mut self) -> [u32; 2] {
-        self.get_2d_words()
-    }
-}
-
 /// The samples of pixel (0,0) as points (see the module documentation).
 fn pixel_points(s: &mut impl WordSampler, n: u32, dims: Range<u32>, out: &mut Vec<u32>) {
     for k in 0..n {
         s.start_pixel_sample([0, 0], k, 0);
-        let offset = s.pixel_words();
+        let offset = s.get_pixel_2d_words();
         let mut pair: Option<(u32, [u32; 2])> = None;
         for d in dims.clone() {
             let word = if d < 2 {
@@ -209,7 +188,7 @@ fn pixel_points(s: &mut impl WordSampler, n: u32, dims: Range<u32>, out: &mut Ve
                     Some((f, w)) if f == first => w,
                     _ => {
                         s.start_pixel_sample([0, 0], k, first);
-                        let w = s.words_2d();
+                        let w = s.get_2d_words();
                         pair = Some((first, w));
                         w
                     }

@@ -28,7 +28,7 @@
 //! ## Modes
 //! * [`GlobalSobolMode::Randomize`]: `None` is pbrt-v3's unscrambled sampler.
 //!   With `Xor`, `Owen` or `FastOwen`, dimensions `>= 2` are randomized
-//!   (seeded from the sampler seed and the randomization's own seed), and the
+//!   (seeded from the sampler seed), and the
 //!   in-pixel offset word is randomized with a seed derived per pixel, which
 //!   keeps every sample inside its pixel: for Owen this is a nested scramble
 //!   that leaves the top `k` digits (the pixel) alone.
@@ -46,18 +46,19 @@
 
 use alloc::boxed::Box;
 
-use super::PixelSampler;
+use super::{SEED_PAD, WordSampler};
 use crate::hash::{hash_words, hash2};
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::scramble::{OwenKey, ScrambleCache, dimension_seed};
 use crate::sobol::{NUM_DIMENSIONS, matrix, sample};
-use crate::{Error, Randomize, to_f32};
+use crate::{Error, RandomizeStrategy};
 
 /// How a [`GlobalSobolSampler`] turns Sobol points into values.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum GlobalSobolMode {
-    /// A standard randomization (`Randomize::None` = pbrt-v3 unscrambled).
-    Randomize(Randomize),
+    /// A standard randomization, seeded by the sampler seed
+    /// (`RandomizeStrategy::None` = pbrt-v3 unscrambled).
+    Randomize(RandomizeStrategy),
     /// The paper's permutation with one sequential stream (call-order dependent).
     PaperLiteral {
         /// Probability that a column is left unflipped, in `[0, 1]`.
@@ -114,9 +115,7 @@ struct Scrambles {
 struct OffsetScramble {
     /// The pixel (reduced modulo `R`) the fields are for, if any.
     pixel: Option<[u32; 2]>,
-    /// The randomization reseeded for that pixel.
-    randomize: Randomize,
-    /// Its seeds of dimensions 0 and 1.
+    /// The pixel's seeds of dimensions 0 and 1.
     seeds: [u32; 2],
     /// Its Owen keys of dimensions 0 and 1 (Owen only).
     owen: Option<[OwenKey; 2]>,
@@ -189,11 +188,9 @@ impl GlobalSobolSampler {
             reason: "Sobol dimensions 0-1 are singular at this resolution",
         })?;
         let mut literal = None;
-        let mut dims_randomize = Randomize::None;
+        let mut dims_strategy = RandomizeStrategy::None;
         match mode {
-            GlobalSobolMode::Randomize(r) => {
-                dims_randomize = super::reseed(r, hash2(seed, super::randomize_seed(r)));
-            }
+            GlobalSobolMode::Randomize(r) => dims_strategy = r,
             GlobalSobolMode::PaperLiteral { threshold, .. } => {
                 literal = Some(PaperLiteral::new(threshold, Some(seed))?);
             }
@@ -209,10 +206,9 @@ impl GlobalSobolSampler {
             mode,
             seed,
             scrambles: Box::new(Scrambles {
-                dims: ScrambleCache::new(dims_randomize),
+                dims: ScrambleCache::new(dims_strategy, hash2(seed, SEED_PAD)),
                 offset: OffsetScramble {
                     pixel: None,
-                    randomize: Randomize::None,
                     seeds: [0; 2],
                     owen: None,
                 },
@@ -300,23 +296,9 @@ impl GlobalSobolSampler {
         }
     }
 
-    /// The next 1-D value as a digit word.
-    pub fn get_1d_word(&mut self) -> u32 {
-        let d = self.dimension;
-        self.dimension = d.wrapping_add(1);
-        self.value(d)
-    }
-
-    /// The next 2-D value as digit words.
-    pub fn get_2d_words(&mut self) -> [u32; 2] {
-        let d = self.dimension;
-        self.dimension = d.wrapping_add(2);
-        [self.value(d), self.value(d.wrapping_add(1))]
-    }
-
     /// The in-pixel offset as digit words (the digits of dimensions 0-1
     /// below the top `k`, randomized or permuted as the mode says).
-    pub fn get_pixel_2d_words(&mut self) -> [u32; 2] {
+    fn pixel_words(&mut self) -> [u32; 2] {
         let (k, index) = (self.log2_res, self.index);
         let raw: [u32; 2] = match self.mode {
             GlobalSobolMode::PaperLiteral { all_dims: true, .. } => match self.literal.as_mut() {
@@ -334,26 +316,22 @@ impl GlobalSobolSampler {
         };
         let offset = raw.map(|w| w << k);
         match self.mode {
-            GlobalSobolMode::Randomize(r) if r != Randomize::None => {
+            GlobalSobolMode::Randomize(r) if r != RandomizeStrategy::None => {
                 let mask = (1u32 << k) - 1;
                 let pixel = self.pixel.map(|c| c & mask);
                 let cache = &mut self.scrambles.offset;
                 if cache.pixel != Some(pixel) {
                     let [px, py] = pixel.map(u64::from);
-                    let pixel_seed =
-                        hash_words(&[self.seed, super::randomize_seed(r), PIXEL_SALT, px, py]);
-                    cache.randomize = super::reseed(r, pixel_seed);
+                    let pixel_seed = hash_words(&[self.seed, SEED_PAD, PIXEL_SALT, px, py]);
                     cache.seeds = [dimension_seed(pixel_seed, 0), dimension_seed(pixel_seed, 1)];
                     cache.owen =
-                        matches!(r, Randomize::Owen { .. }).then(|| cache.seeds.map(OwenKey::new));
+                        (r == RandomizeStrategy::Owen).then(|| cache.seeds.map(OwenKey::new));
                     cache.pixel = Some(pixel);
                 }
-                // Equal to `cache.randomize.apply(offset[d], d)`.
+                // Equal to `r.apply(offset[d], pixel_seed, d)`.
                 core::array::from_fn(|d| match &cache.owen {
                     Some(keys) => keys[d].scramble(offset[d]),
-                    None => cache
-                        .randomize
-                        .apply_dimension_seed(offset[d], cache.seeds[d]),
+                    None => r.apply_dimension_seed(offset[d], cache.seeds[d]),
                 })
             }
             _ => offset,
@@ -361,7 +339,7 @@ impl GlobalSobolSampler {
     }
 }
 
-impl PixelSampler for GlobalSobolSampler {
+impl WordSampler for GlobalSobolSampler {
     fn samples_per_pixel(&self) -> u32 {
         self.spp
     }
@@ -372,16 +350,20 @@ impl PixelSampler for GlobalSobolSampler {
         self.dimension = dimension;
     }
 
-    fn get_1d(&mut self) -> f32 {
-        to_f32(self.get_1d_word())
+    fn get_1d_word(&mut self) -> u32 {
+        let d = self.dimension;
+        self.dimension = d.wrapping_add(1);
+        self.value(d)
     }
 
-    fn get_2d(&mut self) -> [f32; 2] {
-        self.get_2d_words().map(to_f32)
+    fn get_2d_words(&mut self) -> [u32; 2] {
+        let d = self.dimension;
+        self.dimension = d.wrapping_add(2);
+        [self.value(d), self.value(d.wrapping_add(1))]
     }
 
-    fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.get_pixel_2d_words().map(to_f32)
+    fn get_pixel_2d_words(&mut self) -> [u32; 2] {
+        self.pixel_words()
     }
 }
 

@@ -45,25 +45,50 @@ pub use sampler::Sampler;
 pub use stratified::StratifiedSampler;
 pub use zsobol::ZSobolSampler;
 
-use crate::Randomize;
+/// The digit-word form of a pixel sampler: a sampler that produces 32-bit
+/// digit words (bit 31 = first binary digit) writes only these five methods
+/// and gets [`PixelSampler`] from them, each word turned into `[0, 1)` by
+/// [`crate::to_f32`].
+pub trait WordSampler {
+    /// Samples per pixel the sampler was configured for.
+    fn samples_per_pixel(&self) -> u32;
+    /// Starts sample `sample_index` of `pixel`, with the dimension counter at
+    /// `dimension` (as [`PixelSampler::start_pixel_sample`]).
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32);
+    /// The next 1-D value as a digit word.
+    fn get_1d_word(&mut self) -> u32;
+    /// The next 2-D value as digit words.
+    fn get_2d_words(&mut self) -> [u32; 2];
+    /// The in-pixel offset as digit words.
+    fn get_pixel_2d_words(&mut self) -> [u32; 2];
+}
 
-/// The seed a [`Randomize`] carries (0 for [`Randomize::None`]).
-pub(crate) fn randomize_seed(randomize: Randomize) -> u64 {
-    match randomize {
-        Randomize::None => 0,
-        Randomize::Xor { seed } | Randomize::Owen { seed } | Randomize::FastOwen { seed } => seed,
+impl<T: WordSampler> PixelSampler for T {
+    fn samples_per_pixel(&self) -> u32 {
+        WordSampler::samples_per_pixel(self)
+    }
+
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
+        WordSampler::start_pixel_sample(self, pixel, sample_index, dimension);
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        crate::to_f32(self.get_1d_word())
+    }
+
+    fn get_2d(&mut self) -> [f32; 2] {
+        self.get_2d_words().map(crate::to_f32)
+    }
+
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.get_pixel_2d_words().map(crate::to_f32)
     }
 }
 
-/// The same kind of randomization with its seed replaced.
-pub(crate) fn reseed(randomize: Randomize, seed: u64) -> Randomize {
-    match randomize {
-        Randomize::None => Randomize::None,
-        Randomize::Xor { .. } => Randomize::Xor { seed },
-        Randomize::Owen { .. } => Randomize::Owen { seed },
-        Randomize::FastOwen { .. } => Randomize::FastOwen { seed },
-    }
-}
+/// A fixed word that the padded, Z-order and global Sobol samplers hash
+/// right after their seed. It is 0, the second seed the catalog passed when
+/// the strategy carried a seed of its own, so every value stays as pinned.
+pub(crate) const SEED_PAD: u64 = 0;
 
 /// Checks that a sampler gets at least one sample per pixel.
 pub(crate) fn check_spp(spp: u32) -> Result<(), crate::Error> {

@@ -1,12 +1,12 @@
 //! Padded per-pixel Sobol, after pbrt-v4's `PaddedSobolSampler`.
 //!
-//! For every (pixel, sampler dimension) a hash `h` of the seed, the
-//! randomization's own seed, the pixel and the dimension is computed. The
+//! For every (pixel, sampler dimension) a hash `h` of the seed, the pixel
+//! and the dimension is computed. The
 //! sample index `s` is mapped through a seeded bijection of `[0, spp)`
 //! ([`permutation_element`]), so the dimensions of one pixel are paired in
 //! independent random orders ("padding"). A 1-D value is Sobol dimension 0
 //! at the permuted index, a 2-D value Sobol dimensions 0-1, each scrambled
-//! with the given [`Randomize`] seeded from `h` (Owen by default in the
+//! with the given [`RandomizeStrategy`] seeded from `h` (Owen in the
 //! catalog). The in-pixel offset uses a reserved dimension key and does not
 //! move the dimension counter.
 //!
@@ -23,18 +23,18 @@
 //! stays the same (a renderer visits a pixel's samples one after another):
 //! the hash, the permutation's key, the per-dimension scramble seeds and,
 //! for Owen scrambling, the seed rounds of the 32 digit hashes
-//! ([`OwenKey`]). The seed and randomization seed, which start every hash,
-//! are absorbed once per pixel. The values are those of the definition
+//! ([`OwenKey`]). The seed, which starts every hash, is absorbed once per
+//! pixel. The values are those of the definition
 //! ([`PaddedSobolSampler::permuted_index`] and the plain scramble; tests
 //! check both paths agree).
 
 use alloc::vec::Vec;
 
-use super::PixelSampler;
+use super::{SEED_PAD, WordSampler};
 use crate::hash::{WordHasher, hash_words, mix64};
 use crate::scramble::{OwenKey, dimension_seed};
 use crate::sobol::sample;
-use crate::{Error, Randomize, to_f32};
+use crate::{Error, RandomizeStrategy};
 
 /// Dimension key of the in-pixel offset (above every `u32` dimension).
 const PIXEL_KEY: u64 = 1 << 32;
@@ -127,8 +127,7 @@ struct Entry {
 struct Cache {
     /// The pixel `prefix` is for, if any.
     pixel: Option<[u32; 2]>,
-    /// The hash of every key after the seed, the randomization seed and the
-    /// pixel's coordinates.
+    /// The hash of every key after the seed and the pixel's coordinates.
     prefix: Option<WordHasher>,
     entries: Vec<Entry>,
     /// Owen keys of Sobol dimensions 0 and 1, per slot (Owen only).
@@ -139,7 +138,7 @@ struct Cache {
 #[derive(Debug, Clone)]
 pub struct PaddedSobolSampler {
     spp: u32,
-    randomize: Randomize,
+    strategy: RandomizeStrategy,
     seed: u64,
     pixel: [u32; 2],
     sample_index: u32,
@@ -149,13 +148,13 @@ pub struct PaddedSobolSampler {
 }
 
 impl PaddedSobolSampler {
-    /// A sampler with `spp` samples per pixel (any `spp >= 1`). The seed
-    /// inside `randomize` is combined with `seed`.
-    pub fn new(spp: u32, randomize: Randomize, seed: u64) -> Result<Self, Error> {
+    /// A sampler with `spp` samples per pixel (any `spp >= 1`), scrambled
+    /// by `strategy` under `seed`.
+    pub fn new(spp: u32, strategy: RandomizeStrategy, seed: u64) -> Result<Self, Error> {
         super::check_spp(spp)?;
         Ok(PaddedSobolSampler {
             spp,
-            randomize,
+            strategy,
             seed,
             pixel: [0, 0],
             sample_index: 0,
@@ -164,17 +163,16 @@ impl PaddedSobolSampler {
         })
     }
 
-    /// The randomization given at construction.
-    pub fn randomize(&self) -> Randomize {
-        self.randomize
+    /// The randomization strategy given at construction.
+    pub fn strategy(&self) -> RandomizeStrategy {
+        self.strategy
     }
 
     /// The hash of the current pixel and a dimension key.
     fn hash(&self, key: u64) -> u64 {
-        let seed = super::randomize_seed(self.randomize);
         hash_words(&[
             self.seed,
-            seed,
+            SEED_PAD,
             u64::from(self.pixel[0]),
             u64::from(self.pixel[1]),
             key,
@@ -191,8 +189,7 @@ impl PaddedSobolSampler {
     fn direct_words<const N: usize>(&self, key: u64) -> [u32; N] {
         let h = self.hash(key);
         let index = permutation_element(self.sample_index, self.spp, mix64(h));
-        let r = super::reseed(self.randomize, h);
-        core::array::from_fn(|d| r.apply(sample(index, d as u32), d as u32))
+        core::array::from_fn(|d| self.strategy.apply(sample(index, d as u32), h, d as u32))
     }
 
     /// As [`PaddedSobolSampler::direct_words`], through the caches.
@@ -215,8 +212,8 @@ impl PaddedSobolSampler {
         let index = entry.permutation.element(self.sample_index);
         core::array::from_fn(|d| {
             let word = sample(index, d as u32);
-            match self.randomize {
-                Randomize::Owen { .. } => self.cache.owen[slot][d].scramble(word),
+            match self.strategy {
+                RandomizeStrategy::Owen => self.cache.owen[slot][d].scramble(word),
                 r => r.apply_dimension_seed(word, entry.seeds[d]),
             }
         })
@@ -227,9 +224,9 @@ impl PaddedSobolSampler {
     fn refresh(&mut self, slot: usize, key: u64) {
         let cache = &mut self.cache;
         if cache.pixel != Some(self.pixel) {
-            let rs = super::randomize_seed(self.randomize);
             let [x, y] = self.pixel.map(u64::from);
-            cache.prefix = Some(WordHasher::new(5).push(self.seed).push(rs).push(x).push(y));
+            let seeded = WordHasher::new(5).push(self.seed).push(SEED_PAD);
+            cache.prefix = Some(seeded.push(x).push(y));
             cache.pixel = Some(self.pixel);
         }
         let prefix = cache.prefix.unwrap_or(WordHasher::new(5));
@@ -241,7 +238,7 @@ impl PaddedSobolSampler {
             permutation: Permutation::new(self.spp, mix64(h)),
             seeds,
         };
-        let owen = matches!(self.randomize, Randomize::Owen { .. });
+        let owen = self.strategy == RandomizeStrategy::Owen;
         while cache.entries.len() <= slot {
             // Placeholders, invalid until their own key is asked for.
             cache.entries.push(Entry {
@@ -257,29 +254,9 @@ impl PaddedSobolSampler {
             cache.owen[slot] = seeds.map(OwenKey::new);
         }
     }
-
-    /// The next 1-D value as a digit word.
-    pub fn get_1d_word(&mut self) -> u32 {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(1);
-        let [word] = self.words(key);
-        word
-    }
-
-    /// The next 2-D value as digit words.
-    pub fn get_2d_words(&mut self) -> [u32; 2] {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(2);
-        self.words(key)
-    }
-
-    /// The in-pixel offset as digit words.
-    pub fn get_pixel_2d_words(&mut self) -> [u32; 2] {
-        self.words(PIXEL_KEY)
-    }
 }
 
-impl PixelSampler for PaddedSobolSampler {
+impl WordSampler for PaddedSobolSampler {
     fn samples_per_pixel(&self) -> u32 {
         self.spp
     }
@@ -290,16 +267,21 @@ impl PixelSampler for PaddedSobolSampler {
         self.dimension = dimension;
     }
 
-    fn get_1d(&mut self) -> f32 {
-        to_f32(self.get_1d_word())
+    fn get_1d_word(&mut self) -> u32 {
+        let key = u64::from(self.dimension);
+        self.dimension = self.dimension.wrapping_add(1);
+        let [word] = self.words(key);
+        word
     }
 
-    fn get_2d(&mut self) -> [f32; 2] {
-        self.get_2d_words().map(to_f32)
+    fn get_2d_words(&mut self) -> [u32; 2] {
+        let key = u64::from(self.dimension);
+        self.dimension = self.dimension.wrapping_add(2);
+        self.words(key)
     }
 
-    fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.get_pixel_2d_words().map(to_f32)
+    fn get_pixel_2d_words(&mut self) -> [u32; 2] {
+        self.words(PIXEL_KEY)
     }
 }
 
@@ -325,12 +307,7 @@ mod tests {
     fn the_cached_path_equals_the_definition() {
         let mut state = 0x9e37_79b9_7f4a_7c15u64;
         for spp in [1u32, 3, 16, 100] {
-            for r in [
-                Randomize::None,
-                Randomize::Xor { seed: 3 },
-                Randomize::Owen { seed: 4 },
-                Randomize::FastOwen { seed: 5 },
-            ] {
+            for r in RandomizeStrategy::ALL {
                 let mut s = PaddedSobolSampler::new(spp, r, 11).unwrap();
                 for visit in 0..60u32 {
                     state = mix64(state.wrapping_add(u64::from(visit)));

@@ -19,8 +19,8 @@
 //! Every 1-D value is Sobol dimension 0 and every 2-D value Sobol dimensions
 //! 0-1 at the permuted index of that sampler dimension; the sampler
 //! dimensions differ by their index permutation and by their randomization
-//! seed (a hash of the seed and the dimension, the same for all pixels,
-//! FastOwen by default in the catalog). The in-pixel offset uses a reserved
+//! seed (a hash of the seed and the dimension, the same for all pixels;
+//! fast Owen in the catalog). The in-pixel offset uses a reserved
 //! dimension key and does not move the counter.
 //!
 //! ## Limits
@@ -32,7 +32,7 @@
 //!   columns, so index bits above 31 do not enter the Sobol point; they are
 //!   hashed into the randomization seed instead (pixels that share the low
 //!   32 bits get independent scrambles of the same block). Without a
-//!   randomization that would repeat samples, so `Randomize::None` requires
+//!   randomization that would repeat samples, so `RandomizeStrategy::None` requires
 //!   `2k + m <= 32`.
 //!
 //! ## Speed
@@ -45,10 +45,10 @@
 mod cache;
 
 use self::cache::{Cache, Layout};
-use super::PixelSampler;
+use super::{SEED_PAD, WordSampler};
 use crate::hash::{bounded, hash_words, mix64};
 use crate::sobol::sample;
-use crate::{Error, Randomize, to_f32};
+use crate::{Error, RandomizeStrategy};
 
 /// All 24 permutations of `{0, 1, 2, 3}` in lexicographic order.
 const fn base4_permutations() -> [[u8; 4]; 24] {
@@ -104,7 +104,7 @@ pub struct ZSobolSampler {
     log2_res: u32,
     /// Base-4 digits above the odd low bit (if any).
     base4_digits: u32,
-    randomize: Randomize,
+    strategy: RandomizeStrategy,
     seed: u64,
     morton: u64,
     dimension: u32,
@@ -113,12 +113,12 @@ pub struct ZSobolSampler {
 }
 
 impl ZSobolSampler {
-    /// A sampler for `spp` samples per pixel of a `resolution` image. The
-    /// seed inside `randomize` is combined with `seed`.
+    /// A sampler for `spp` samples per pixel of a `resolution` image,
+    /// scrambled by `strategy` under `seed`.
     pub fn new(
         spp: u32,
         resolution: [u32; 2],
-        randomize: Randomize,
+        strategy: RandomizeStrategy,
         seed: u64,
     ) -> Result<Self, Error> {
         super::check_spp(spp)?;
@@ -132,7 +132,7 @@ impl ZSobolSampler {
                 reason: "the Z-order index (2 log2 R + log2 spp bits) exceeds 64 bits",
             });
         }
-        if bits > 32 && randomize == Randomize::None {
+        if bits > 32 && strategy == RandomizeStrategy::None {
             return Err(Error::InvalidSampleCount {
                 count: u64::from(spp),
                 reason: "unscrambled Z-order Sobol needs 2 log2 R + log2 spp <= 32 index bits",
@@ -140,7 +140,7 @@ impl ZSobolSampler {
         }
         let layout = Layout {
             seed,
-            randomize,
+            strategy,
             log2_spp,
             base4_digits: log2_res + log2_spp.div_ceil(2),
         };
@@ -149,7 +149,7 @@ impl ZSobolSampler {
             log2_spp,
             log2_res,
             base4_digits: layout.base4_digits,
-            randomize,
+            strategy,
             seed,
             morton: 0,
             dimension: 0,
@@ -161,7 +161,7 @@ impl ZSobolSampler {
     fn layout(&self) -> Layout {
         Layout {
             seed: self.seed,
-            randomize: self.randomize,
+            strategy: self.strategy,
             log2_spp: self.log2_spp,
             base4_digits: self.base4_digits,
         }
@@ -182,13 +182,16 @@ impl ZSobolSampler {
     /// from the definition ([`ZSobolSampler::sample_index`]).
     fn direct_words<const N: usize>(&self, key: u64) -> [u32; N] {
         let index = self.sample_index(key);
-        let r = self.randomizer(key, index >> 32);
-        core::array::from_fn(|d| r.apply(sample(index as u32, d as u32), d as u32))
+        let seed = self.randomizer_seed(key, index >> 32);
+        core::array::from_fn(|d| {
+            let word = sample(index as u32, d as u32);
+            self.strategy.apply(word, seed, d as u32)
+        })
     }
 
-    /// The randomization given at construction.
-    pub fn randomize(&self) -> Randomize {
-        self.randomize
+    /// The randomization strategy given at construction.
+    pub fn strategy(&self) -> RandomizeStrategy {
+        self.strategy
     }
 
     /// The Morton index of the current pixel sample (before permutation).
@@ -199,7 +202,7 @@ impl ZSobolSampler {
     /// The permuted 64-bit sequence index of the current pixel sample for
     /// sampler dimension key `key`.
     pub fn sample_index(&self, key: u64) -> u64 {
-        let dim_seed = hash_words(&[self.seed, super::randomize_seed(self.randomize), key]);
+        let dim_seed = hash_words(&[self.seed, SEED_PAD, key]);
         let odd = self.log2_spp & 1;
         let mut index = 0u64;
         for i in (odd..self.base4_digits).rev() {
@@ -217,34 +220,14 @@ impl ZSobolSampler {
         index
     }
 
-    /// The randomization of dimension key `key` (and high index bits `high`).
-    fn randomizer(&self, key: u64, high: u64) -> Randomize {
-        let rs = super::randomize_seed(self.randomize);
-        super::reseed(self.randomize, hash_words(&[self.seed, rs, key, high]))
-    }
-
-    /// The next 1-D value as a digit word.
-    pub fn get_1d_word(&mut self) -> u32 {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(1);
-        let [word] = self.words(key);
-        word
-    }
-
-    /// The next 2-D value as digit words.
-    pub fn get_2d_words(&mut self) -> [u32; 2] {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(2);
-        self.words(key)
-    }
-
-    /// The in-pixel offset as digit words.
-    pub fn get_pixel_2d_words(&mut self) -> [u32; 2] {
-        self.words(PIXEL_KEY)
+    /// The randomization seed of dimension key `key` (and high index bits
+    /// `high`).
+    fn randomizer_seed(&self, key: u64, high: u64) -> u64 {
+        hash_words(&[self.seed, SEED_PAD, key, high])
     }
 }
 
-impl PixelSampler for ZSobolSampler {
+impl WordSampler for ZSobolSampler {
     fn samples_per_pixel(&self) -> u32 {
         self.spp
     }
@@ -256,16 +239,21 @@ impl PixelSampler for ZSobolSampler {
         self.dimension = dimension;
     }
 
-    fn get_1d(&mut self) -> f32 {
-        to_f32(self.get_1d_word())
+    fn get_1d_word(&mut self) -> u32 {
+        let key = u64::from(self.dimension);
+        self.dimension = self.dimension.wrapping_add(1);
+        let [word] = self.words(key);
+        word
     }
 
-    fn get_2d(&mut self) -> [f32; 2] {
-        self.get_2d_words().map(to_f32)
+    fn get_2d_words(&mut self) -> [u32; 2] {
+        let key = u64::from(self.dimension);
+        self.dimension = self.dimension.wrapping_add(2);
+        self.words(key)
     }
 
-    fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.get_pixel_2d_words().map(to_f32)
+    fn get_pixel_2d_words(&mut self) -> [u32; 2] {
+        self.words(PIXEL_KEY)
     }
 }
 
@@ -309,14 +297,9 @@ mod tests {
         ];
         let mut state = 0x2545_f491_4f6c_dd1du64;
         for (spp, res) in configs {
-            for r in [
-                Randomize::None,
-                Randomize::Xor { seed: 3 },
-                Randomize::Owen { seed: 4 },
-                Randomize::FastOwen { seed: 5 },
-            ] {
+            for r in RandomizeStrategy::ALL {
                 let Ok(mut s) = ZSobolSampler::new(spp, res, r, 11) else {
-                    assert!(r == Randomize::None);
+                    assert!(r == RandomizeStrategy::None);
                     continue;
                 };
                 for visit in 0..120u32 {
@@ -351,7 +334,7 @@ mod tests {
     #[test]
     fn the_index_map_is_a_bijection_preserving_pixel_blocks() {
         for spp in [1u32, 2, 4, 8, 32] {
-            let mut s = ZSobolSampler::new(spp, [8, 8], Randomize::None, 3).unwrap();
+            let mut s = ZSobolSampler::new(spp, [8, 8], RandomizeStrategy::None, 3).unwrap();
             let m = s.log2_spp;
             let total = 64usize << m;
             let mut seen = alloc::vec![false; total];

@@ -6,7 +6,7 @@
 //! of point `index` in dimension `dim` is the XOR of the generator-matrix
 //! columns `c` for which bit `c` of `index` is set. Dimension 0 is the van der
 //! Corput sequence and point 0 is all zeros. [`sample_randomized`] applies a
-//! [`Randomize`] strategy. [`GrayCodeBatch`] emits the points in Gray-code
+//! [`RandomizeStrategy`] under a seed. [`GrayCodeBatch`] emits the points in Gray-code
 //! order (the order of Joe & Kuo's reference generator and of
 //! `scipy.stats.qmc.Sobol`) at one XOR per value.
 
@@ -16,7 +16,7 @@ mod matrices;
 pub use gray::{GrayCodeBatch, gray_code};
 pub use matrices::{NUM_DIMENSIONS, matrix};
 
-use crate::Randomize;
+use crate::RandomizeStrategy;
 
 /// The unscrambled 32-bit digit word of point `index` in dimension `dim`
 /// (natural order).
@@ -94,15 +94,16 @@ pub fn sample_f32(index: u32, dim: u32) -> f32 {
 
 /// The digit word of point `index` in dimension `dim`, randomized.
 ///
-/// The randomization is seeded per dimension (see [`Randomize::apply`]), so
+/// The randomization is seeded per dimension (see
+/// [`RandomizeStrategy::apply`]), so
 /// dimensions are scrambled independently. The paper's permutation is not a
 /// function of the output word and is handled by [`crate::paper`].
 ///
 /// # Panics
 /// If `dim >= NUM_DIMENSIONS`.
 #[inline]
-pub fn sample_randomized(index: u32, dim: u32, randomize: Randomize) -> u32 {
-    randomize.apply(sample(index, dim), dim)
+pub fn sample_randomized(index: u32, dim: u32, strategy: RandomizeStrategy, seed: u64) -> u32 {
+    strategy.apply(sample(index, dim), seed, dim)
 }
 
 /// Four consecutive dimensions `dim..dim + 4` of point `index`, randomized.
@@ -111,14 +112,14 @@ pub fn sample_randomized(index: u32, dim: u32, randomize: Randomize) -> u32 {
 /// # Panics
 /// If `dim + 3 >= NUM_DIMENSIONS`.
 #[inline(always)]
-pub fn sample_4d(index: u32, dim: u32, randomize: Randomize) -> [u32; 4] {
+pub fn sample_4d(index: u32, dim: u32, strategy: RandomizeStrategy, seed: u64) -> [u32; 4] {
     let table = matrices::table();
     let d = dim as usize;
     let words = multiply_lanes(
         [&table[d], &table[d + 1], &table[d + 2], &table[d + 3]],
         index,
     );
-    randomize.apply_4(words, dim)
+    strategy.apply_4(words, seed, dim)
 }
 
 #[cfg(test)]

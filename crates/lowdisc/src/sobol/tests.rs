@@ -1,6 +1,6 @@
 //! Tests of the Sobol core: exact values, order conventions, net property.
 use super::*;
-use crate::Randomize;
+use crate::RandomizeStrategy;
 
 #[test]
 fn first_points_are_the_textbook_values() {
@@ -32,21 +32,25 @@ fn is_02_net(points: &[(u32, u32)], m: u32) -> bool {
     })
 }
 
-fn strategies() -> [Randomize; 4] {
+/// Every strategy with a seed of its own.
+fn strategies() -> [(RandomizeStrategy, u64); 4] {
     [
-        Randomize::None,
-        Randomize::Xor { seed: 11 },
-        Randomize::Owen { seed: 12 },
-        Randomize::FastOwen { seed: 13 },
+        (RandomizeStrategy::None, 0),
+        (RandomizeStrategy::Xor, 11),
+        (RandomizeStrategy::Owen, 12),
+        (RandomizeStrategy::FastOwen, 13),
     ]
 }
 
 #[test]
 fn dims_0_1_form_02_nets_under_every_randomization() {
-    for r in strategies() {
+    for (r, seed) in strategies() {
         for m in 0..=16u32 {
             let pts: alloc::vec::Vec<(u32, u32)> = (0..1u32 << m)
-                .map(|i| (sample_randomized(i, 0, r), sample_randomized(i, 1, r)))
+                .map(|i| {
+                    let x = sample_randomized(i, 0, r, seed);
+                    (x, sample_randomized(i, 1, r, seed))
+                })
                 .collect();
             assert!(
                 is_02_net(&pts, m),
@@ -141,11 +145,11 @@ fn gray_code_batch_rejects_bad_ranges() {
 
 #[test]
 fn four_dimensional_sampling_equals_one_dimensional() {
-    for r in strategies() {
+    for (r, seed) in strategies() {
         for index in [0u32, 1, 5, 1 << 16, 0xdead_beef] {
-            let four = sample_4d(index, 8, r);
+            let four = sample_4d(index, 8, r, seed);
             for (k, &value) in four.iter().enumerate() {
-                assert_eq!(value, sample_randomized(index, 8 + k as u32, r));
+                assert_eq!(value, sample_randomized(index, 8 + k as u32, r, seed));
             }
         }
     }
@@ -156,9 +160,9 @@ fn four_dimensional_sampling_equals_one_dimensional() {
 fn randomized_values_are_stable() {
     let got: alloc::vec::Vec<u32> = strategies()
         .iter()
-        .flat_map(|&r| {
+        .flat_map(|&(r, seed)| {
             [(5u32, 0u32), (1000, 3), (123_456_789, 21_200)]
-                .map(|(i, d)| sample_randomized(i, d, r))
+                .map(|(i, d)| sample_randomized(i, d, r, seed))
         })
         .collect();
     assert_eq!(got, PINNED_RANDOMIZED);

@@ -26,10 +26,11 @@
 use alloc::vec::Vec;
 
 use super::{BASE4_PERMUTATIONS, LOW_BIT_SALT, PIXEL_KEY};
+use crate::RandomizeStrategy;
 use crate::hash::{bounded, hash_words, mix64};
+use crate::pixel::SEED_PAD;
 use crate::scramble::dimension_seed;
 use crate::sobol::sample;
-use crate::{Randomize, pixel};
 
 /// Dimension keys below this are cached (slot `1 + key`; slot 0 is the
 /// pixel key).
@@ -42,8 +43,8 @@ const LOWER_TABLE_BITS: u32 = 10;
 pub(super) struct Layout {
     /// The sampler seed.
     pub seed: u64,
-    /// The randomization (its seed is combined with `seed`).
-    pub randomize: Randomize,
+    /// The randomization strategy (seeded from `seed`).
+    pub strategy: RandomizeStrategy,
     /// `m`: sample bits of the index.
     pub log2_spp: u32,
     /// Base-4 digits of the index (above the odd low bit, if any).
@@ -138,7 +139,7 @@ impl Cache {
         Some(core::array::from_fn(|d| {
             let reversed = entry.upper_words[d] ^ lower_words[d];
             layout
-                .randomize
+                .strategy
                 .apply_dimension_seed_reversed(reversed, entry.seeds[d])
         }))
     }
@@ -146,10 +147,9 @@ impl Cache {
     /// Adds the entries of every slot up to `slot`.
     #[cold]
     fn grow(&mut self, layout: &Layout, slot: usize) {
-        let rs = pixel::randomize_seed(layout.randomize);
         for s in self.entries.len()..=slot {
             let key = if s == 0 { PIXEL_KEY } else { s as u64 - 1 };
-            let dim_seed = hash_words(&[layout.seed, rs, key]);
+            let dim_seed = hash_words(&[layout.seed, SEED_PAD, key]);
             self.levels
                 .extend((0..u64::from(layout.base4_digits)).map(|i| level(dim_seed, i)));
             self.entries.push(Entry {
@@ -235,8 +235,7 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
     }
     let high = upper >> 32;
     if !entry.seeded || entry.high != high {
-        let rs = pixel::randomize_seed(layout.randomize);
-        let h = hash_words(&[layout.seed, rs, key, high]);
+        let h = hash_words(&[layout.seed, SEED_PAD, key, high]);
         entry.seeds = [dimension_seed(h, 0), dimension_seed(h, 1)];
         entry.high = high;
         entry.seeded = true;
