@@ -13,8 +13,12 @@
 //! * [`RandomizeStrategy::FastOwen`] is a Laine-Karras-style hash on bit-reversed
 //!   words (Burley 2020, "Practical Hash-based Owen Scrambling", with the
 //!   improved hash of N. Vegdahl 2021, "Building a Better LK Hash"): a
-//!   nested scramble, though not an exactly uniform one. Its multiplier
-//!   `(seed >> 16) | 1` makes a rare seed with small upper bits weak.
+//!   nested scramble, though not an exactly uniform one. The hash multiplies
+//!   by `(key >> 16) | 1`, so a key with small upper bits would get a tiny
+//!   multiplier (39 for Sobol dimension 8 of `sobol-fast-owen` seed 0, 19
+//!   for a key of `zsobol` seed 1); the strategy therefore hands every
+//!   per-dimension seed to the hash through [`fast_owen_key`], which
+//!   rehashes a seed whose multiplier has a run of more than 5 zero bits.
 //!
 //! All four keep a digital net a digital net: the first `2^m` Sobol points
 //! of dimensions 0 and 1 remain a (0,m,2)-net (tested in `sobol::tests`).
@@ -75,7 +79,7 @@ impl RandomizeStrategy {
             RandomizeStrategy::None => word,
             RandomizeStrategy::Xor => word ^ dimension_seed,
             RandomizeStrategy::Owen => owen_scramble(word, dimension_seed),
-            RandomizeStrategy::FastOwen => fast_owen_scramble(word, dimension_seed),
+            RandomizeStrategy::FastOwen => fast_owen_scramble(word, fast_owen_key(dimension_seed)),
         }
     }
 
@@ -86,7 +90,9 @@ impl RandomizeStrategy {
     #[inline(always)]
     pub fn apply_dimension_seed_reversed(self, reversed: u32, dimension_seed: u32) -> u32 {
         match self {
-            RandomizeStrategy::FastOwen => fast_owen_scramble_reversed(reversed, dimension_seed),
+            RandomizeStrategy::FastOwen => {
+                fast_owen_scramble_reversed(reversed, fast_owen_key(dimension_seed))
+            }
             r => r.apply_dimension_seed(reversed.reverse_bits(), dimension_seed),
         }
     }
@@ -108,7 +114,7 @@ impl RandomizeStrategy {
                 core::array::from_fn(|k| owen_scramble(words[k], seeds[k]))
             }
             RandomizeStrategy::FastOwen => {
-                fast_owen_scramble_4(words, dimension_seeds_4(seed, dim))
+                fast_owen_scramble_4(words, dimension_seeds_4(seed, dim).map(fast_owen_key))
             }
         }
     }
@@ -221,9 +227,55 @@ impl OwenKey {
     }
 }
 
+/// The longest run of zero bits [`fast_owen_key`] allows in the 16-bit
+/// multiplier `(key >> 16) | 1` (leading zeros count as a run).
+const MAX_ZERO_RUN: u32 = 5;
+
+/// Whether the 16-bit multiplier `m` has a run of more than
+/// [`MAX_ZERO_RUN`] zero bits.
+#[inline(always)]
+fn has_long_zero_run(m: u32) -> bool {
+    let mut run = !m & 0xffff;
+    for _ in 0..MAX_ZERO_RUN {
+        run &= run >> 1;
+    }
+    run != 0
+}
+
+/// The key [`RandomizeStrategy::FastOwen`] gives [`fast_owen_scramble`] for
+/// a per-dimension seed: the seed itself when its multiplier
+/// `(seed >> 16) | 1` has no run of more than 5 zero bits, otherwise the
+/// first rehash of it that has none (after 8 rehashes, which a random seed
+/// needs with probability below 1e-8, the upper half is ORed with
+/// `0x5555`, whose runs are single zeros).
+///
+/// On the reversed word the multiply carries bit `i` into bit `i + k` for
+/// every set bit `k` of the multiplier; a run of zeros from bit `a` to `b`
+/// leaves the digits `a..=b` places below a digit out of its scramble but
+/// for carries. A seed with small upper bits is the extreme case: seed 0 of
+/// `sobol-fast-owen` gave Sobol dimension 8 the multiplier 39, zeros from
+/// bit 6 up. About 9 % of uniformly random seeds are rehashed.
+#[inline]
+pub fn fast_owen_key(dimension_seed: u32) -> u32 {
+    let mut key = dimension_seed;
+    for _ in 0..8 {
+        if !has_long_zero_run((key >> 16) | 1) {
+            return key;
+        }
+        key = (mix64(u64::from(key) ^ FAST_OWEN_REHASH) >> 32) as u32;
+    }
+    key | 0x5555_0000
+}
+
+/// Salt of [`fast_owen_key`]'s rehash.
+const FAST_OWEN_REHASH: u64 = 0x6c6b_5f72_6568_6173;
+
 /// Fast hash-based Owen scrambling (Laine-Karras style permutation of a
 /// bit-reversed word: the hash of N. Vegdahl, "Building a Better LK Hash",
-/// 2021, also used by the `sobol_burley` crate and Blender Cycles).
+/// 2021, also used by the `sobol_burley` crate and Blender Cycles), keyed by
+/// `seed` as it is (bit for bit `sobol_burley::parts::owen_scramble_rev` of
+/// the reversed word); [`RandomizeStrategy::FastOwen`] keys it with
+/// [`fast_owen_key`].
 ///
 /// On the reversed word, a bit only influences higher bits, i.e. in the
 /// original word each digit's flip depends only on earlier digits, which is

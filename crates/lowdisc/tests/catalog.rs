@@ -90,7 +90,7 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     ),
     (
         SamplerName::ZSobol,
-        [0.65799886, 0.89639354, 0.45493573, 0.69660795, 0.2677477],
+        [0.65799886, 0.20376617, 0.45493573, 0.69660795, 0.2677477],
     ),
 ];
 
@@ -179,8 +179,8 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
     (
         SamplerName::SobolFastOwen,
         [
-            0x34851310, 0x09762fb2, 0x4eab80bf, 0x935f3d13, 0xb2eefefb, 0x89c8ef4d, 0xcc2422b9,
-            0x5003b49c, 0x0af32eec, 0x73751ec4, 0xfb806984, 0xe09e2e42,
+            0x34851310, 0xf18b8079, 0x4eab80bf, 0x935f3d13, 0x425df421, 0x89c8ef4d, 0xcc2422b9,
+            0x80a21dff, 0x0af32eec, 0x73751ec4, 0x3e97bd7e, 0xe09e2e42,
         ],
     ),
     (
@@ -207,8 +207,8 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
     (
         SamplerName::ZSobol,
         [
-            0xec7c869e, 0x3e2df071, 0x2f487c0d, 0x5ef17c4b, 0x836ddfb5, 0xbe0bd932, 0x9ba78a8e,
-            0xddfc08e5, 0x557fab77, 0x2a352fca, 0x72af9b6c, 0xcc81e442,
+            0xec7c869e, 0x8aacdbc7, 0x2f487c0d, 0x5ef17c4b, 0x5026ae61, 0xbe0bd932, 0x9ba78a8e,
+            0x04b9c475, 0x557fab77, 0x2a352fca, 0xf03e9725, 0xcc81e442,
         ],
     ),
 ];
