@@ -33,7 +33,7 @@ use lowdisc_benches::{BATCH_VALUES, BATCH_WIDTHS, PAIRS, pairs_1d, pairs_4d};
 const SEED: u64 = 0x1234_5678;
 
 /// The randomizations of `sample_randomized`, by benchmark name.
-fn strategies() -> [(&'static str, RandomizeStrategy); 4] {
+fn strategies() -> [(&'static str, RandomizeStrategy); 5] {
     RandomizeStrategy::ALL.map(|r| (r.name(), r))
 }
 

@@ -13,9 +13,11 @@
 //! | `sobol-xor` | global Sobol, random digital shift | XOR-scrambled Sobol |
 //! | `sobol-owen` | global Sobol, exact Owen | Owen-scrambled Sobol |
 //! | `sobol-fast-owen` | global Sobol, fast Owen | fast-Owen Sobol |
+//! | `sobol-lms` | global Sobol, LMS + digital shift | LMS-scrambled Sobol |
 //! | `paper` | global Sobol, paper permutation, literal stream | same |
 //! | `paper-repro` | global Sobol, paper permutation, hashed | same |
 //! | `padded-sobol` | pbrt-v4 padded Sobol (Owen) | pixel (0,0) of a 1x1 image |
+//! | `padded-sobol-lms` | padded per-pixel Sobol, LMS + shift | pixel (0,0) of a 1x1 image |
 //! | `zsobol` | pbrt-v4 Z-order Sobol (fast Owen) | pixel (0,0) of a 1x1 image |
 
 mod points;
@@ -55,19 +57,24 @@ pub enum SamplerName {
     SobolOwen,
     /// `sobol-fast-owen`: Sobol with fast hash-based Owen scrambling.
     SobolFastOwen,
+    /// `sobol-lms`: Sobol with Matoušek's linear matrix scrambling and a
+    /// digital shift (pixel: pbrt-v3 global sampler).
+    SobolLms,
     /// `paper`: the paper's permuted Sobol, literal (one sequential stream).
     Paper,
     /// `paper-repro`: the paper's permuted Sobol, reproducible (hashed draws).
     PaperRepro,
     /// `padded-sobol`: pbrt-v4's padded per-pixel Owen-scrambled Sobol.
     PaddedSobol,
+    /// `padded-sobol-lms`: padded per-pixel Sobol, LMS + shift scrambled.
+    PaddedSobolLms,
     /// `zsobol`: pbrt-v4's Z-order blue-noise Sobol.
     ZSobol,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 12] = [
+    pub const ALL: [SamplerName; 14] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -76,9 +83,11 @@ impl SamplerName {
         SamplerName::SobolXor,
         SamplerName::SobolOwen,
         SamplerName::SobolFastOwen,
+        SamplerName::SobolLms,
         SamplerName::Paper,
         SamplerName::PaperRepro,
         SamplerName::PaddedSobol,
+        SamplerName::PaddedSobolLms,
         SamplerName::ZSobol,
     ];
 
@@ -93,9 +102,11 @@ impl SamplerName {
             SamplerName::SobolXor => "sobol-xor",
             SamplerName::SobolOwen => "sobol-owen",
             SamplerName::SobolFastOwen => "sobol-fast-owen",
+            SamplerName::SobolLms => "sobol-lms",
             SamplerName::Paper => "paper",
             SamplerName::PaperRepro => "paper-repro",
             SamplerName::PaddedSobol => "padded-sobol",
+            SamplerName::PaddedSobolLms => "padded-sobol-lms",
             SamplerName::ZSobol => "zsobol",
         }
     }
@@ -111,9 +122,13 @@ impl SamplerName {
             SamplerName::SobolXor => "Sobol with a random digital shift (XOR)",
             SamplerName::SobolOwen => "Sobol with exact Owen (nested uniform) scrambling",
             SamplerName::SobolFastOwen => "Sobol with fast hash-based Owen scrambling",
+            SamplerName::SobolLms => {
+                "Sobol with Matousek linear matrix scrambling + digital shift (LMS+shift)"
+            }
             SamplerName::Paper => "Song & Ro permuted Sobol, literal: one sequential stream",
             SamplerName::PaperRepro => "Song & Ro permuted Sobol, reproducible: hashed draws",
             SamplerName::PaddedSobol => "pbrt-v4 padded per-pixel Owen-scrambled Sobol",
+            SamplerName::PaddedSobolLms => "padded per-pixel Sobol with LMS + digital shift",
             SamplerName::ZSobol => "pbrt-v4 Z-order blue-noise Sobol (Ahmed & Wonka 2020)",
         }
     }
@@ -127,6 +142,7 @@ impl SamplerName {
                 | SamplerName::SobolXor
                 | SamplerName::SobolOwen
                 | SamplerName::SobolFastOwen
+                | SamplerName::SobolLms
                 | SamplerName::Paper
                 | SamplerName::PaperRepro
         )
@@ -139,6 +155,7 @@ impl SamplerName {
             SamplerName::SobolXor => Some(RandomizeStrategy::Xor),
             SamplerName::SobolOwen => Some(RandomizeStrategy::Owen),
             SamplerName::SobolFastOwen => Some(RandomizeStrategy::FastOwen),
+            SamplerName::SobolLms => Some(RandomizeStrategy::Lms),
             _ => None,
         }
     }
@@ -233,7 +250,8 @@ impl SamplerConfig {
             SamplerName::Sobol
             | SamplerName::SobolXor
             | SamplerName::SobolOwen
-            | SamplerName::SobolFastOwen => {
+            | SamplerName::SobolFastOwen
+            | SamplerName::SobolLms => {
                 let r = self.name.sobol_strategy().unwrap_or_default();
                 global(GlobalSobolMode::Randomize(r))
             }
@@ -247,6 +265,9 @@ impl SamplerConfig {
             }),
             SamplerName::PaddedSobol => {
                 PaddedSobolSampler::new(spp, RandomizeStrategy::Owen, seed).map(Sampler::from)
+            }
+            SamplerName::PaddedSobolLms => {
+                PaddedSobolSampler::new(spp, RandomizeStrategy::Lms, seed).map(Sampler::from)
             }
             SamplerName::ZSobol => {
                 ZSobolSampler::new(spp, res, RandomizeStrategy::FastOwen, seed).map(Sampler::from)

@@ -10,6 +10,9 @@
 //!   per-dimension word).
 //! * [`RandomizeStrategy::Owen`] is exact nested uniform scrambling: digit `b`
 //!   is flipped by a random bit drawn from a hash of the seed and digits `0..b`.
+//! * [`RandomizeStrategy::Lms`] is Matoušek's linear matrix scrambling with a
+//!   digital shift ([`lms`]): a random unit lower-triangular matrix times the
+//!   word, XOR a random word.
 //! * [`RandomizeStrategy::FastOwen`] is a Laine-Karras-style hash on bit-reversed
 //!   words (Burley 2020, "Practical Hash-based Owen Scrambling", with the
 //!   improved hash of N. Vegdahl 2021, "Building a Better LK Hash"): a
@@ -20,12 +23,14 @@
 //!   per-dimension seed to the hash through [`fast_owen_key`], which
 //!   rehashes a seed whose multiplier has a run of more than 5 zero bits.
 //!
-//! All four keep a digital net a digital net: the first `2^m` Sobol points
+//! All five keep a digital net a digital net: the first `2^m` Sobol points
 //! of dimensions 0 and 1 remain a (0,m,2)-net (tested in `sobol::tests`).
 
 mod cache;
+pub mod lms;
 
-pub use cache::ScrambleCache;
+pub use cache::{PreparedKey, ScrambleCache};
+pub use lms::{LmsKey, lms_scramble};
 
 use crate::hash::{hash2, mix64};
 
@@ -48,15 +53,18 @@ pub enum RandomizeStrategy {
     Owen,
     /// Fast hash-based Owen scrambling (Laine-Karras / Burley / Vegdahl).
     FastOwen,
+    /// Matoušek's linear matrix scrambling plus a digital shift (LMS + shift).
+    Lms,
 }
 
 impl RandomizeStrategy {
     /// Every strategy, the identity first.
-    pub const ALL: [RandomizeStrategy; 4] = [
+    pub const ALL: [RandomizeStrategy; 5] = [
         RandomizeStrategy::None,
         RandomizeStrategy::Xor,
         RandomizeStrategy::Owen,
         RandomizeStrategy::FastOwen,
+        RandomizeStrategy::Lms,
     ];
 
     /// Randomizes digit word `word` of dimension `dim` under `seed` (the
@@ -80,6 +88,7 @@ impl RandomizeStrategy {
             RandomizeStrategy::Xor => word ^ dimension_seed,
             RandomizeStrategy::Owen => owen_scramble(word, dimension_seed),
             RandomizeStrategy::FastOwen => fast_owen_scramble(word, fast_owen_key(dimension_seed)),
+            RandomizeStrategy::Lms => lms_scramble(word, dimension_seed),
         }
     }
 
@@ -116,17 +125,38 @@ impl RandomizeStrategy {
             RandomizeStrategy::FastOwen => {
                 fast_owen_scramble_4(words, dimension_seeds_4(seed, dim).map(fast_owen_key))
             }
+            RandomizeStrategy::Lms => {
+                let seeds = dimension_seeds_4(seed, dim);
+                core::array::from_fn(|k| lms_scramble(words[k], seeds[k]))
+            }
         }
     }
 
-    /// A short name: `none`, `xor`, `owen` or `fast-owen`.
+    /// A short name: `none`, `xor`, `owen`, `fast-owen` or `lms`.
     pub fn name(self) -> &'static str {
         match self {
             RandomizeStrategy::None => "none",
             RandomizeStrategy::Xor => "xor",
             RandomizeStrategy::Owen => "owen",
             RandomizeStrategy::FastOwen => "fast-owen",
+            RandomizeStrategy::Lms => "lms",
         }
+    }
+
+    /// The prepared key of a per-dimension seed, for the strategies whose
+    /// per-seed setup costs more than a scramble (Owen, LMS); `None` for the
+    /// others, which use the seed as it is.
+    pub fn prepare(self, dimension_seed: u32) -> Option<PreparedKey> {
+        match self {
+            RandomizeStrategy::Owen => Some(PreparedKey::Owen(OwenKey::new(dimension_seed))),
+            RandomizeStrategy::Lms => Some(PreparedKey::Lms(LmsKey::new(dimension_seed))),
+            _ => None,
+        }
+    }
+
+    /// Whether [`RandomizeStrategy::prepare`] gives a key.
+    pub fn prepares(self) -> bool {
+        matches!(self, RandomizeStrategy::Owen | RandomizeStrategy::Lms)
     }
 }
 
@@ -335,71 +365,4 @@ pub fn derive_seed(seed: u64, salt: u64) -> u64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The definition of [`owen_scramble`], one full `hash3` per digit.
-    fn owen_reference(word: u32, seed: u32) -> u32 {
-        let mut out = word;
-        for b in 0..32u32 {
-            let prefix = if b == 0 { 0 } else { word >> (32 - b) };
-            let h = crate::hash::hash3(u64::from(seed), u64::from(b), u64::from(prefix));
-            out ^= ((h >> 63) as u32) << (31 - b);
-        }
-        out
-    }
-
-    #[test]
-    fn owen_scrambles_equal_the_definition() {
-        let mut state = 0x0fed_cba9_8765_4321u64;
-        for _ in 0..3000 {
-            state = mix64(state.wrapping_add(3));
-            let (word, seed) = (state as u32, (state >> 32) as u32);
-            let key = OwenKey::new(seed);
-            for w in [word, 0, u32::MAX, word & 0xf000_0000] {
-                let want = owen_reference(w, seed);
-                assert_eq!(owen_scramble(w, seed), want);
-                assert_eq!(key.scramble(w), want);
-            }
-        }
-    }
-
-    #[test]
-    fn apply_dimension_seed_equals_apply() {
-        for seed in [0u64, 9, u64::MAX] {
-            for r in RandomizeStrategy::ALL {
-                for (dim, word) in [(0u32, 0u32), (1, 0x8000_0001), (77, 0xdead_beef)] {
-                    let s = dimension_seed(seed, dim);
-                    let want = r.apply(word, seed, dim);
-                    assert_eq!(r.apply_dimension_seed(word, s), want);
-                    let reversed = word.reverse_bits();
-                    assert_eq!(r.apply_dimension_seed_reversed(reversed, s), want);
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn four_lane_paths_equal_the_single_lane_ones() {
-        let mut state = 0x0123_4567_89ab_cdefu64;
-        for _ in 0..2000 {
-            state = mix64(state.wrapping_add(1));
-            let seed = state;
-            let dim = (state >> 40) as u32 ^ if state & 1 == 0 { u32::MAX - 5 } else { 0 };
-            let words: [u32; 4] = core::array::from_fn(|k| mix64(state ^ k as u64) as u32);
-            let seeds = dimension_seeds_4(seed, dim);
-            let fast = fast_owen_scramble_4(words, seeds);
-            for (k, (&s, &f)) in seeds.iter().zip(&fast).enumerate() {
-                assert_eq!(s, dimension_seed(seed, dim.wrapping_add(k as u32)));
-                assert_eq!(f, fast_owen_scramble(words[k], s));
-            }
-            for r in RandomizeStrategy::ALL {
-                let d = dim.min(u32::MAX - 3);
-                let four = r.apply_4(words, seed, d);
-                for (k, (&v, &w)) in four.iter().zip(&words).enumerate() {
-                    assert_eq!(v, r.apply(w, seed, d + k as u32));
-                }
-            }
-        }
-    }
-}
+mod tests;

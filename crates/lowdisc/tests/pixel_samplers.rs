@@ -11,7 +11,7 @@ use lowdisc::pixel::{
 use lowdisc::sobol::sample;
 use lowdisc::{RandomizeStrategy, to_f32};
 
-const STRATEGIES: [RandomizeStrategy; 4] = RandomizeStrategy::ALL;
+const STRATEGIES: [RandomizeStrategy; 5] = RandomizeStrategy::ALL;
 
 fn global_modes() -> Vec<GlobalSobolMode> {
     let mut modes: Vec<_> = STRATEGIES
@@ -271,8 +271,12 @@ fn with_stream_reseeds_only_the_literal_stream() {
 }
 
 #[test]
-fn padded_and_zsobol_pixel_samples_form_nets_under_owen() {
-    for r in [RandomizeStrategy::Owen, RandomizeStrategy::FastOwen] {
+fn padded_and_zsobol_pixel_samples_form_nets_under_owen_and_lms() {
+    for r in [
+        RandomizeStrategy::Owen,
+        RandomizeStrategy::FastOwen,
+        RandomizeStrategy::Lms,
+    ] {
         for m in [0u32, 1, 2, 4, 5, 8] {
             let spp = 1 << m;
             let mut padded = PaddedSobolSampler::new(spp, r, 4).unwrap();

@@ -13,7 +13,7 @@
 //!   permutations / Owen scrambling; `independent`: stream = dimension,
 //!   offset = point index; `stratified`: `stratified::jittered_points` over
 //!   dimensions `0..end`, sliced to the range.
-//! * `padded-sobol`, `zsobol` are pixel samplers: their points are the `n`
+//! * `padded-sobol`, `padded-sobol-lms`, `zsobol` are pixel samplers: their points are the `n`
 //!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
 //!   the in-pixel offset, dimensions `2j + 2, 2j + 3` the `get_2d` pair at
 //!   sampler dimension `2j` (so a dimension's value does not depend on the
@@ -101,7 +101,8 @@ pub fn generate_points(
         SamplerName::Sobol
         | SamplerName::SobolXor
         | SamplerName::SobolOwen
-        | SamplerName::SobolFastOwen => {
+        | SamplerName::SobolFastOwen
+        | SamplerName::SobolLms => {
             let r = name.sobol_strategy().unwrap_or_default();
             for k in 0..n {
                 out.extend(
@@ -156,8 +157,13 @@ pub fn generate_points(
                 out.extend(point[dims.start as usize..].iter().map(|&x| word_of(x)));
             }
         }
-        SamplerName::PaddedSobol => {
-            let mut s = PaddedSobolSampler::new(n, RandomizeStrategy::Owen, seed)?;
+        SamplerName::PaddedSobol | SamplerName::PaddedSobolLms => {
+            let strategy = if name == SamplerName::PaddedSobol {
+                RandomizeStrategy::Owen
+            } else {
+                RandomizeStrategy::Lms
+            };
+            let mut s = PaddedSobolSampler::new(n, strategy, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
         SamplerName::ZSobol => {

@@ -49,7 +49,7 @@ use alloc::boxed::Box;
 use super::{SEED_PAD, WordSampler};
 use crate::hash::{hash_words, hash2};
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
-use crate::scramble::{OwenKey, ScrambleCache, dimension_seed};
+use crate::scramble::{PreparedKey, ScrambleCache, dimension_seed};
 use crate::sobol::{NUM_DIMENSIONS, matrix, sample};
 use crate::{Error, RandomizeStrategy};
 
@@ -117,8 +117,8 @@ struct OffsetScramble {
     pixel: Option<[u32; 2]>,
     /// The pixel's seeds of dimensions 0 and 1.
     seeds: [u32; 2],
-    /// Its Owen keys of dimensions 0 and 1 (Owen only).
-    owen: Option<[OwenKey; 2]>,
+    /// Its prepared keys of dimensions 0 and 1 (Owen and LMS only).
+    prepared: Option<[PreparedKey; 2]>,
 }
 
 /// The top `k` digits of a word as an integer (`k <= 16`).
@@ -210,7 +210,7 @@ impl GlobalSobolSampler {
                 offset: OffsetScramble {
                     pixel: None,
                     seeds: [0; 2],
-                    owen: None,
+                    prepared: None,
                 },
             }),
             literal,
@@ -324,12 +324,14 @@ impl GlobalSobolSampler {
                     let [px, py] = pixel.map(u64::from);
                     let pixel_seed = hash_words(&[self.seed, SEED_PAD, PIXEL_SALT, px, py]);
                     cache.seeds = [dimension_seed(pixel_seed, 0), dimension_seed(pixel_seed, 1)];
-                    cache.owen =
-                        (r == RandomizeStrategy::Owen).then(|| cache.seeds.map(OwenKey::new));
+                    cache.prepared = match cache.seeds.map(|s| r.prepare(s)) {
+                        [Some(a), Some(b)] => Some([a, b]),
+                        _ => None,
+                    };
                     cache.pixel = Some(pixel);
                 }
                 // Equal to `r.apply(offset[d], pixel_seed, d)`.
-                core::array::from_fn(|d| match &cache.owen {
+                core::array::from_fn(|d| match &cache.prepared {
                     Some(keys) => keys[d].scramble(offset[d]),
                     None => r.apply_dimension_seed(offset[d], cache.seeds[d]),
                 })

@@ -7,12 +7,12 @@
 //! independent random orders ("padding"). A 1-D value is Sobol dimension 0
 //! at the permuted index, a 2-D value Sobol dimensions 0-1, each scrambled
 //! with the given [`RandomizeStrategy`] seeded from `h` (Owen in the
-//! catalog). The in-pixel offset uses a reserved dimension key and does not
+//! catalog's `padded-sobol`, LMS + shift in `padded-sobol-lms`). The in-pixel offset uses a reserved dimension key and does not
 //! move the dimension counter.
 //!
 //! Any `spp >= 1` works. For a power of two `2^m` the `spp` samples of one
 //! pixel are the first `2^m` Sobol points, so their 2-D values form a
-//! (0,m,2)-net (kept by XOR, Owen and fast Owen). For other counts they are
+//! (0,m,2)-net (kept by every strategy). For other counts they are
 //! the first `spp` points of the (0,2)-sequence: well spread, but not a
 //! complete net. Sample indices `>= spp` are reduced modulo `spp`.
 //!
@@ -22,17 +22,16 @@
 //! `CACHED_KEYS` (and the pixel key) it is kept per key while the pixel
 //! stays the same (a renderer visits a pixel's samples one after another):
 //! the hash, the permutation's key, the per-dimension scramble seeds and,
-//! for Owen scrambling, the seed rounds of the 32 digit hashes
-//! ([`OwenKey`]). The seed, which starts every hash, is absorbed once per
-//! pixel. The values are those of the definition
-//! ([`PaddedSobolSampler::permuted_index`] and the plain scramble; tests
-//! check both paths agree).
+//! for Owen and LMS scrambling, their [`PreparedKey`]s. The seed, which
+//! starts every hash, is absorbed once per pixel. The values are those of
+//! the definition ([`PaddedSobolSampler::permuted_index`] and the plain
+//! scramble; tests check both paths agree).
 
 use alloc::vec::Vec;
 
 use super::{SEED_PAD, WordSampler};
 use crate::hash::{WordHasher, hash_words, mix64};
-use crate::scramble::{OwenKey, dimension_seed};
+use crate::scramble::{PreparedKey, dimension_seed};
 use crate::sobol::sample;
 use crate::{Error, RandomizeStrategy};
 
@@ -130,8 +129,9 @@ struct Cache {
     /// The hash of every key after the seed and the pixel's coordinates.
     prefix: Option<WordHasher>,
     entries: Vec<Entry>,
-    /// Owen keys of Sobol dimensions 0 and 1, per slot (Owen only).
-    owen: Vec<[OwenKey; 2]>,
+    /// Prepared keys of Sobol dimensions 0 and 1, per slot (Owen and LMS
+    /// only).
+    prepared: Vec<[PreparedKey; 2]>,
 }
 
 /// pbrt-v4-style padded Sobol sampler; see the module documentation.
@@ -212,9 +212,9 @@ impl PaddedSobolSampler {
         let index = entry.permutation.element(self.sample_index);
         core::array::from_fn(|d| {
             let word = sample(index, d as u32);
-            match self.strategy {
-                RandomizeStrategy::Owen => self.cache.owen[slot][d].scramble(word),
-                r => r.apply_dimension_seed(word, entry.seeds[d]),
+            match self.cache.prepared.get(slot) {
+                Some(keys) => keys[d].scramble(word),
+                None => self.strategy.apply_dimension_seed(word, entry.seeds[d]),
             }
         })
     }
@@ -238,20 +238,22 @@ impl PaddedSobolSampler {
             permutation: Permutation::new(self.spp, mix64(h)),
             seeds,
         };
-        let owen = self.strategy == RandomizeStrategy::Owen;
+        let prepare = |s| self.strategy.prepare(s);
+        let keys = match seeds.map(prepare) {
+            [Some(a), Some(b)] => Some([a, b]),
+            _ => None,
+        };
         while cache.entries.len() <= slot {
             // Placeholders, invalid until their own key is asked for.
             cache.entries.push(Entry {
                 valid: false,
                 ..entry.clone()
             });
-            if owen {
-                cache.owen.push(seeds.map(OwenKey::new));
-            }
+            cache.prepared.extend(keys.clone());
         }
         cache.entries[slot] = entry;
-        if owen {
-            cache.owen[slot] = seeds.map(OwenKey::new);
+        if let Some(keys) = keys {
+            cache.prepared[slot] = keys;
         }
     }
 }

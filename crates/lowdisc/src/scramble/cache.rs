@@ -1,16 +1,40 @@
 //! [`ScrambleCache`]: a [`RandomizeStrategy`] and its seed, with the
 //! per-dimension seed hashing done once per dimension and kept, for callers
-//! that scramble many words of the same few dimensions (the pixel samplers).
+//! that scramble many words of the same few dimensions (the pixel samplers);
+//! and [`PreparedKey`], the kept per-seed setup of the costly strategies.
 
 use alloc::vec::Vec;
 
-use super::{OwenKey, RandomizeStrategy, dimension_seed};
+use super::{LmsKey, OwenKey, RandomizeStrategy, dimension_seed};
 
 /// Dimensions below this are cached; the others are hashed on every call.
 const CACHED_DIMENSIONS: u32 = 1024;
 
+/// The per-seed setup of a strategy that is worth keeping: the digit hashes'
+/// first rounds of Owen scrambling, the matrix and shift of LMS. Built by
+/// [`RandomizeStrategy::prepare`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PreparedKey {
+    /// Exact Owen scrambling.
+    Owen(OwenKey),
+    /// Linear matrix scrambling plus a digital shift.
+    Lms(LmsKey),
+}
+
+impl PreparedKey {
+    /// Equals `strategy.apply_dimension_seed(word, seed)` for the strategy
+    /// and seed the key was prepared from.
+    #[inline]
+    pub fn scramble(&self, word: u32) -> u32 {
+        match self {
+            PreparedKey::Owen(key) => key.scramble(word),
+            PreparedKey::Lms(key) => key.scramble(word),
+        }
+    }
+}
+
 /// A [`RandomizeStrategy`] under one seed, with its per-dimension seeds
-/// (and, for Owen scrambling, the [`OwenKey`]s) computed on first use and
+/// (and, for Owen and LMS, the [`PreparedKey`]s) computed on first use and
 /// kept: `apply` gives exactly `strategy.apply(word, seed, dim)`.
 #[derive(Debug, Clone)]
 pub struct ScrambleCache {
@@ -18,8 +42,8 @@ pub struct ScrambleCache {
     seed: u64,
     /// Per-dimension seeds of dimensions `0..seeds.len()`.
     seeds: Vec<u32>,
-    /// Owen keys of dimensions `0..owen.len()` (Owen only).
-    owen: Vec<OwenKey>,
+    /// Prepared keys of dimensions `0..prepared.len()` (Owen and LMS only).
+    prepared: Vec<PreparedKey>,
 }
 
 impl ScrambleCache {
@@ -29,7 +53,7 @@ impl ScrambleCache {
             strategy,
             seed,
             seeds: Vec::new(),
-            owen: Vec::new(),
+            prepared: Vec::new(),
         }
     }
 
@@ -53,22 +77,19 @@ impl ScrambleCache {
         if d >= self.seeds.len() {
             self.grow(d);
         }
-        match r {
-            RandomizeStrategy::Owen => self.owen[d].scramble(word),
-            _ => r.apply_dimension_seed(word, self.seeds[d]),
+        match self.prepared.get(d) {
+            Some(key) => key.scramble(word),
+            None => r.apply_dimension_seed(word, self.seeds[d]),
         }
     }
 
     /// Computes the entries of dimensions up to `d`.
     #[cold]
     fn grow(&mut self, d: usize) {
-        let owen = self.strategy == RandomizeStrategy::Owen;
         for dim in self.seeds.len()..=d {
             let s = dimension_seed(self.seed, dim as u32);
             self.seeds.push(s);
-            if owen {
-                self.owen.push(OwenKey::new(s));
-            }
+            self.prepared.extend(self.strategy.prepare(s));
         }
     }
 }
@@ -88,6 +109,18 @@ mod tests {
                 for word in [0u32, u32::MAX, 0x1234_5678 ^ k as u32] {
                     let want = r.apply(word, seed, dim);
                     assert_eq!(cache.apply(word, dim), want, "{r:?} {dim}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn prepared_keys_equal_the_plain_scramble() {
+        for r in RandomizeStrategy::ALL {
+            assert_eq!(r.prepare(77).is_some(), r.prepares());
+            if let Some(key) = r.prepare(77) {
+                for word in [0u32, 1, 0xdead_beef, u32::MAX] {
+                    assert_eq!(key.scramble(word), r.apply_dimension_seed(word, 77));
                 }
             }
         }

@@ -33,12 +33,13 @@ fn is_02_net(points: &[(u32, u32)], m: u32) -> bool {
 }
 
 /// Every strategy with a seed of its own.
-fn strategies() -> [(RandomizeStrategy, u64); 4] {
+fn strategies() -> [(RandomizeStrategy, u64); 5] {
     [
         (RandomizeStrategy::None, 0),
         (RandomizeStrategy::Xor, 11),
         (RandomizeStrategy::Owen, 12),
         (RandomizeStrategy::FastOwen, 13),
+        (RandomizeStrategy::Lms, 14),
     ]
 }
 
@@ -168,7 +169,23 @@ fn randomized_values_are_stable() {
     assert_eq!(got, PINNED_RANDOMIZED);
 }
 
-const PINNED_RANDOMIZED: [u32; 12] = [
+const PINNED_RANDOMIZED: [u32; 15] = [
     2684354560, 3904897024, 2167260960, 1006716817, 946614010, 4034898467, 3612639239, 60169538,
-    1151766995, 1864917619, 482693418, 1126523575,
+    1151766995, 1864917619, 482693418, 1126523575, 1713437331, 1619144032, 3846115874,
 ];
+
+#[test]
+fn lms_is_not_the_identity_nor_a_digital_shift() {
+    // LMS keeps the nets above; here it must also move points, and not all
+    // by one XOR word (which a digital shift would).
+    let lms = |i: u32| sample_randomized(i, 3, RandomizeStrategy::Lms, 5);
+    let shift = lms(0);
+    assert_ne!(shift, 0);
+    let moved = (1..256u32)
+        .filter(|&i| lms(i) ^ shift != sample(i, 3))
+        .count();
+    assert!(
+        moved > 200,
+        "{moved} of 255 points differ from a digital shift"
+    );
+}

@@ -1,0 +1,117 @@
+//! Pinned points-mode words of every catalog name (value stability).
+
+use super::config;
+use lowdisc::catalog::{Order, SamplerName, generate_points};
+
+/// Pinned points (value stability): seed 7, the first 4 points in Gray
+/// order, dimensions 0..3.
+const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
+    (
+        SamplerName::Independent,
+        [
+            0x50e272b0, 0xc795f2b7, 0x9320dcb1, 0xbd5a26a3, 0x6f7af2b2, 0xcf3bbb5f, 0x0a785080,
+            0xdab141f6, 0x3f27edf4, 0xde644be7, 0x8db6faaf, 0x842cf7b7,
+        ],
+    ),
+    (
+        SamplerName::Stratified,
+        [
+            0x2e6e98c5, 0x798838ab, 0x10b1f8d5, 0xefa636ac, 0x67cc8f5c, 0x5f3a5c9f, 0x1b27219a,
+            0xdbe7c02c, 0xbf55b0e3, 0xa8ff11d9, 0xa5a04697, 0xd47dc87d,
+        ],
+    ),
+    (
+        SamplerName::Halton,
+        [
+            0x49504766, 0x6269a7e8, 0x2338f0a5, 0xc9504766, 0xb7befd3e, 0x566c23d9, 0x09504766,
+            0x0d145293, 0xbcd28a3f, 0x89504766, 0x9b4d3621, 0x899f570c,
+        ],
+    ),
+    (
+        SamplerName::HaltonOwen,
+        [
+            0x2c8072b7, 0xa6b858d1, 0xa341dbab, 0x8de4b4c2, 0x31b9a890, 0xe5e27464, 0x53bd1d16,
+            0xc7848659, 0x046ba26a, 0xefd51b7a, 0x872d797c, 0x589a0ae1,
+        ],
+    ),
+    // scipy.stats.qmc.Sobol(3, scramble=False): [0,0,0], [.5,.5,.5], [.75,.25,.25], [.25,.75,.75].
+    (
+        SamplerName::Sobol,
+        [
+            0x00000000, 0x00000000, 0x00000000, 0x80000000, 0x80000000, 0x80000000, 0xc0000000,
+            0x40000000, 0x40000000, 0x40000000, 0xc0000000, 0xc0000000,
+        ],
+    ),
+    (
+        SamplerName::SobolXor,
+        [
+            0xef891f64, 0xe700b270, 0x6ac2a53a, 0x6f891f64, 0x6700b270, 0xeac2a53a, 0x2f891f64,
+            0xa700b270, 0x2ac2a53a, 0xaf891f64, 0x2700b270, 0xaac2a53a,
+        ],
+    ),
+    (
+        SamplerName::SobolOwen,
+        [
+            0x113ab8f4, 0xaef89253, 0xaf37d463, 0x8ded71bf, 0x001e6c8c, 0x1e385e7a, 0xc5251871,
+            0xe242a89d, 0xda803a34, 0x79f6f2d4, 0x69eba34c, 0x6099c52b,
+        ],
+    ),
+    (
+        SamplerName::SobolFastOwen,
+        [
+            0x34851310, 0xf18b8079, 0x4eab80bf, 0x935f3d13, 0x425df421, 0x89c8ef4d, 0xcc2422b9,
+            0x80a21dff, 0x0af32eec, 0x73751ec4, 0x3e97bd7e, 0xe09e2e42,
+        ],
+    ),
+    (
+        SamplerName::SobolLms,
+        [
+            0xcc3ee54d, 0x3b82d093, 0x872a777f, 0x091c884b, 0xd9bc9556, 0x354eb1b1, 0x48d42aac,
+            0x78e45d47, 0xc23f1317, 0x8df647aa, 0x9ada1882, 0x705bd5d9,
+        ],
+    ),
+    (
+        SamplerName::Paper,
+        [
+            0x00000000, 0x00000000, 0x00000000, 0x7fffffff, 0x80000000, 0x80000000, 0x40000000,
+            0xbfffffff, 0xbfffffff, 0x40000000, 0xc0000000, 0x3fffffff,
+        ],
+    ),
+    (
+        SamplerName::PaperRepro,
+        [
+            0x00000000, 0x00000000, 0x00000000, 0x80000000, 0x80000000, 0x80000000, 0xc0000000,
+            0xbfffffff, 0xbfffffff, 0x40000000, 0x3fffffff, 0xc0000000,
+        ],
+    ),
+    (
+        SamplerName::PaddedSobol,
+        [
+            0xe069c999, 0xfc91353b, 0xab70e9e8, 0x37f5f676, 0x296b6092, 0x02ff0210, 0x4aa44e78,
+            0x89ab3cba, 0xf5452b5b, 0x82ab33c5, 0x515bdd4e, 0x652e63b3,
+        ],
+    ),
+    (
+        SamplerName::PaddedSobolLms,
+        [
+            0xac5c0bec, 0x38dc6ea3, 0x33e082fe, 0x7ec4a55e, 0xf0b6c500, 0xb4f45e36, 0x1b76277d,
+            0x6f8e6acc, 0x444baaa6, 0xc9ee89cf, 0xa7e4c16f, 0xc35f766e,
+        ],
+    ),
+    (
+        SamplerName::ZSobol,
+        [
+            0xec7c869e, 0x8aacdbc7, 0x2f487c0d, 0x5ef17c4b, 0x5026ae61, 0xbe0bd932, 0x9ba78a8e,
+            0x04b9c475, 0x557fab77, 0x2a352fca, 0xf03e9725, 0xcc81e442,
+        ],
+    ),
+];
+
+#[test]
+fn pinned_points_for_every_name() {
+    assert_eq!(PINNED_POINTS.len(), SamplerName::ALL.len());
+    for &(name, want) in PINNED_POINTS {
+        let got = generate_points(&config(name), 4, 0..3, Order::Gray).unwrap();
+        assert_eq!(got, want, "{name}");
+    }
+}
