@@ -19,6 +19,9 @@
 //! | `padded-sobol` | pbrt-v4 padded Sobol (Owen) | pixel (0,0) of a 1x1 image |
 //! | `padded-sobol-lms` | padded per-pixel Sobol, LMS + shift | pixel (0,0) of a 1x1 image |
 //! | `zsobol` | pbrt-v4 Z-order Sobol (fast Owen) | pixel (0,0) of a 1x1 image |
+//! | `sobol-burley` | Burley 2020 shuffled Owen Sobol, 4-D padding | pixel (0,0) of a 1x1 image |
+//! | `laine-karras` | the same with the 2011 Laine-Karras hash | pixel (0,0) of a 1x1 image |
+//! | `sobol-pixel-xor` | per-pixel Sobol, random digital shift | pixel (0,0) of a 1x1 image |
 
 mod points;
 
@@ -28,8 +31,8 @@ use core::str::FromStr;
 use crate::halton::HaltonRandomize;
 use crate::paper::check_threshold;
 use crate::pixel::{
-    GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
-    Sampler, StratifiedSampler, ZSobolSampler,
+    BurleySampler, GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler,
+    NestedHash, PaddedSobolSampler, PixelXorSampler, Sampler, StratifiedSampler, ZSobolSampler,
 };
 use crate::{Error, RandomizeStrategy};
 
@@ -70,11 +73,18 @@ pub enum SamplerName {
     PaddedSobolLms,
     /// `zsobol`: pbrt-v4's Z-order blue-noise Sobol.
     ZSobol,
+    /// `sobol-burley`: Burley 2020's shuffled Owen-scrambled Sobol padded
+    /// by groups of four dimensions.
+    SobolBurley,
+    /// `laine-karras`: as `sobol-burley` with the 2011 Laine-Karras hash.
+    LaineKarras,
+    /// `sobol-pixel-xor`: per-pixel Sobol with a random digital shift.
+    SobolPixelXor,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 14] = [
+    pub const ALL: [SamplerName; 17] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -89,6 +99,9 @@ impl SamplerName {
         SamplerName::PaddedSobol,
         SamplerName::PaddedSobolLms,
         SamplerName::ZSobol,
+        SamplerName::SobolBurley,
+        SamplerName::LaineKarras,
+        SamplerName::SobolPixelXor,
     ];
 
     /// The name as written on the command line.
@@ -108,6 +121,9 @@ impl SamplerName {
             SamplerName::PaddedSobol => "padded-sobol",
             SamplerName::PaddedSobolLms => "padded-sobol-lms",
             SamplerName::ZSobol => "zsobol",
+            SamplerName::SobolBurley => "sobol-burley",
+            SamplerName::LaineKarras => "laine-karras",
+            SamplerName::SobolPixelXor => "sobol-pixel-xor",
         }
     }
 
@@ -130,6 +146,11 @@ impl SamplerName {
             SamplerName::PaddedSobol => "pbrt-v4 padded per-pixel Owen-scrambled Sobol",
             SamplerName::PaddedSobolLms => "padded per-pixel Sobol with LMS + digital shift",
             SamplerName::ZSobol => "pbrt-v4 Z-order blue-noise Sobol (Ahmed & Wonka 2020)",
+            SamplerName::SobolBurley => {
+                "Burley 2020 per-pixel shuffled Owen-scrambled Sobol, padded by 4-D groups"
+            }
+            SamplerName::LaineKarras => "as sobol-burley with the Laine-Karras 2011 hash",
+            SamplerName::SobolPixelXor => "per-pixel Sobol with a random digital shift per pixel",
         }
     }
 
@@ -272,6 +293,13 @@ impl SamplerConfig {
             SamplerName::ZSobol => {
                 ZSobolSampler::new(spp, res, RandomizeStrategy::FastOwen, seed).map(Sampler::from)
             }
+            SamplerName::SobolBurley => {
+                BurleySampler::new(spp, NestedHash::Vegdahl, seed).map(Sampler::from)
+            }
+            SamplerName::LaineKarras => {
+                BurleySampler::new(spp, NestedHash::LaineKarras, seed).map(Sampler::from)
+            }
+            SamplerName::SobolPixelXor => PixelXorSampler::new(spp, seed).map(Sampler::from),
         }
     }
 }

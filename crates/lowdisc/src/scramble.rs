@@ -317,7 +317,7 @@ pub fn fast_owen_scramble(word: u32, seed: u32) -> u32 {
 
 /// [`fast_owen_scramble`] of `reversed.reverse_bits()`.
 #[inline(always)]
-fn fast_owen_scramble_reversed(reversed: u32, seed: u32) -> u32 {
+pub(crate) fn fast_owen_scramble_reversed(reversed: u32, seed: u32) -> u32 {
     let mut x = reversed;
     x ^= x.wrapping_mul(0x3d20_adea);
     x = x.wrapping_add(seed);

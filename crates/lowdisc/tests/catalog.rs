@@ -25,7 +25,7 @@ fn names_round_trip_and_are_distinct() {
         assert!(!n.description().is_empty());
         assert!(names[..i].iter().all(|m| *m != names[i]));
     }
-    assert_eq!(names.len(), 14);
+    assert_eq!(names.len(), 17);
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
@@ -102,6 +102,18 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     (
         SamplerName::ZSobol,
         [0.65799886, 0.20376617, 0.45493573, 0.69660795, 0.2677477],
+    ),
+    (
+        SamplerName::SobolBurley,
+        [0.86986864, 0.246517, 0.9222194, 0.12691325, 0.66779095],
+    ),
+    (
+        SamplerName::LaineKarras,
+        [0.2902516, 0.22327322, 0.8078757, 0.09269214, 0.12133825],
+    ),
+    (
+        SamplerName::SobolPixelXor,
+        [0.42065853, 0.8610611, 0.9550967, 0.85675836, 0.56369215],
     ),
 ];
 

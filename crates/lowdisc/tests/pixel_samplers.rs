@@ -11,6 +11,10 @@ use lowdisc::pixel::{
 use lowdisc::sobol::sample;
 use lowdisc::{RandomizeStrategy, to_f32};
 
+#[path = "common/net.rs"]
+mod net;
+use net::is_net;
+
 const STRATEGIES: [RandomizeStrategy; 5] = RandomizeStrategy::ALL;
 
 fn global_modes() -> Vec<GlobalSobolMode> {
@@ -129,21 +133,6 @@ fn every_global_sobol_sample_lies_in_its_pixel() {
             }
         }
     }
-}
-
-/// Whether `points` (digit-word pairs, `2^m` of them) have exactly one point
-/// in every elementary interval of volume `2^-m`.
-fn is_net(points: &[[u32; 2]], m: u32) -> bool {
-    assert_eq!(points.len(), 1 << m);
-    (0..=m).all(|a| {
-        let mut seen = vec![false; 1 << m];
-        points.iter().all(|&[x, y]| {
-            let cx = (u64::from(x) >> (32 - a)) as usize;
-            let cy = (u64::from(y) >> (32 - (m - a))) as usize;
-            let cell = (cx << (m - a)) | cy;
-            !std::mem::replace(&mut seen[cell], true)
-        })
-    })
 }
 
 #[test]

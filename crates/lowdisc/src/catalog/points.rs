@@ -13,7 +13,8 @@
 //!   permutations / Owen scrambling; `independent`: stream = dimension,
 //!   offset = point index; `stratified`: `stratified::jittered_points` over
 //!   dimensions `0..end`, sliced to the range.
-//! * `padded-sobol`, `padded-sobol-lms`, `zsobol` are pixel samplers: their points are the `n`
+//! * `padded-sobol`, `padded-sobol-lms`, `zsobol`, `sobol-burley`,
+//!   `laine-karras` and `sobol-pixel-xor` are pixel samplers: their points are the `n`
 //!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
 //!   the in-pixel offset, dimensions `2j + 2, 2j + 3` the `get_2d` pair at
 //!   sampler dimension `2j` (so a dimension's value does not depend on the
@@ -28,7 +29,9 @@ use super::{SamplerConfig, SamplerName};
 use crate::halton::{self, Halton, HaltonRandomize};
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
-use crate::pixel::{PaddedSobolSampler, WordSampler, ZSobolSampler};
+use crate::pixel::{
+    BurleySampler, NestedHash, PaddedSobolSampler, PixelXorSampler, WordSampler, ZSobolSampler,
+};
 use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
 use crate::{Error, RandomizeStrategy, stratified};
 
@@ -168,6 +171,19 @@ pub fn generate_points(
         }
         SamplerName::ZSobol => {
             let mut s = ZSobolSampler::new(n, [1, 1], RandomizeStrategy::FastOwen, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::SobolBurley | SamplerName::LaineKarras => {
+            let hash = if name == SamplerName::SobolBurley {
+                NestedHash::Vegdahl
+            } else {
+                NestedHash::LaineKarras
+            };
+            let mut s = BurleySampler::new(n, hash, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::SobolPixelXor => {
+            let mut s = PixelXorSampler::new(n, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
     }

@@ -29,6 +29,7 @@ pub trait PixelSampler {
     fn get_pixel_2d(&mut self) -> [f32; 2];
 }
 
+mod burley;
 mod global_sobol;
 mod halton;
 mod independent;
@@ -37,6 +38,10 @@ mod sampler;
 mod stratified;
 mod zsobol;
 
+pub use burley::{
+    BurleySampler, NestedHash, PixelXorSampler, burley_word, laine_karras_scramble_reversed,
+    seed_hash,
+};
 pub use global_sobol::{GlobalSobolMode, GlobalSobolSampler};
 pub use halton::HaltonSampler;
 pub use independent::IndependentSampler;

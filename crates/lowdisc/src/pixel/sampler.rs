@@ -4,8 +4,8 @@
 //! [`crate::catalog::SamplerConfig`].
 
 use super::{
-    GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler, PixelSampler,
-    StratifiedSampler, ZSobolSampler,
+    BurleySampler, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
+    PixelSampler, PixelXorSampler, StratifiedSampler, ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -23,6 +23,10 @@ pub enum Sampler {
     PaddedSobol(PaddedSobolSampler),
     /// Z-order blue-noise Sobol (pbrt-v4's default).
     ZSobol(ZSobolSampler),
+    /// Burley 2020: shuffled, Owen-scrambled, 4-D padded per-pixel Sobol.
+    Burley(BurleySampler),
+    /// Per-pixel Sobol with a random digital shift.
+    PixelXor(PixelXorSampler),
 }
 
 /// Applies `$body` to the sampler inside whatever variant `$s` is.
@@ -35,6 +39,8 @@ macro_rules! dispatch {
             Sampler::GlobalSobol($inner) => $body,
             Sampler::PaddedSobol($inner) => $body,
             Sampler::ZSobol($inner) => $body,
+            Sampler::Burley($inner) => $body,
+            Sampler::PixelXor($inner) => $body,
         }
     };
 }
@@ -107,5 +113,17 @@ impl From<StratifiedSampler> for Sampler {
 impl From<HaltonSampler> for Sampler {
     fn from(s: HaltonSampler) -> Self {
         Sampler::Halton(s)
+    }
+}
+
+impl From<BurleySampler> for Sampler {
+    fn from(s: BurleySampler) -> Self {
+        Sampler::Burley(s)
+    }
+}
+
+impl From<PixelXorSampler> for Sampler {
+    fn from(s: PixelXorSampler) -> Self {
+        Sampler::PixelXor(s)
     }
 }

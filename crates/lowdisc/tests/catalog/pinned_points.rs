@@ -105,6 +105,27 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
             0x04b9c475, 0x557fab77, 0x2a352fca, 0xf03e9725, 0xcc81e442,
         ],
     ),
+    (
+        SamplerName::SobolBurley,
+        [
+            0x37804759, 0xc27c1b3e, 0x32f2d86e, 0xe9655563, 0x7e2a01b5, 0xd24d90e5, 0x56489f0d,
+            0x0f0d4074, 0x92ec9349, 0xbba27f91, 0xb5f9355a, 0x578945af,
+        ],
+    ),
+    (
+        SamplerName::LaineKarras,
+        [
+            0xa0bad662, 0xd68e5024, 0xa81a7621, 0x554c29cd, 0x0ed0920f, 0x0eaafdfd, 0x2ef5143a,
+            0xa8669b93, 0xe5407317, 0xed26aef9, 0x5f37236f, 0x5f58b999,
+        ],
+    ),
+    (
+        SamplerName::SobolPixelXor,
+        [
+            0x44bb22c8, 0x4d7f3acf, 0xd25f96c5, 0xc4bb22c8, 0xcd7f3acf, 0x525f96c5, 0x04bb22c8,
+            0x8d7f3acf, 0x125f96c5, 0x84bb22c8, 0x0d7f3acf, 0x925f96c5,
+        ],
+    ),
 ];
 
 #[test]
