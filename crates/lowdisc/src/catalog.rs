@@ -22,6 +22,8 @@
 //! | `sobol-burley` | Burley 2020 shuffled Owen Sobol, 4-D padding | pixel (0,0) of a 1x1 image |
 //! | `laine-karras` | the same with the 2011 Laine-Karras hash | pixel (0,0) of a 1x1 image |
 //! | `sobol-pixel-xor` | per-pixel Sobol, random digital shift | pixel (0,0) of a 1x1 image |
+//! | `pmj02` | generated PMJ02 sets, per-pixel permuted | pixel (0,0) of a 1x1 image |
+//! | `pmj02bn` | generated pmj02bn (blue-noise) sets | pixel (0,0) of a 1x1 image |
 
 mod points;
 
@@ -32,8 +34,10 @@ use crate::halton::HaltonRandomize;
 use crate::paper::check_threshold;
 use crate::pixel::{
     BurleySampler, GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler,
-    NestedHash, PaddedSobolSampler, PixelXorSampler, Sampler, StratifiedSampler, ZSobolSampler,
+    NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, Sampler, StratifiedSampler,
+    ZSobolSampler,
 };
+use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
 
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
@@ -80,11 +84,15 @@ pub enum SamplerName {
     LaineKarras,
     /// `sobol-pixel-xor`: per-pixel Sobol with a random digital shift.
     SobolPixelXor,
+    /// `pmj02`: progressive multi-jittered (0,2) point sets.
+    Pmj02,
+    /// `pmj02bn`: the blue-noise variant of `pmj02`.
+    Pmj02Bn,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 17] = [
+    pub const ALL: [SamplerName; 19] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -102,6 +110,8 @@ impl SamplerName {
         SamplerName::SobolBurley,
         SamplerName::LaineKarras,
         SamplerName::SobolPixelXor,
+        SamplerName::Pmj02,
+        SamplerName::Pmj02Bn,
     ];
 
     /// The name as written on the command line.
@@ -124,6 +134,8 @@ impl SamplerName {
             SamplerName::SobolBurley => "sobol-burley",
             SamplerName::LaineKarras => "laine-karras",
             SamplerName::SobolPixelXor => "sobol-pixel-xor",
+            SamplerName::Pmj02 => "pmj02",
+            SamplerName::Pmj02Bn => "pmj02bn",
         }
     }
 
@@ -151,6 +163,8 @@ impl SamplerName {
             }
             SamplerName::LaineKarras => "as sobol-burley with the Laine-Karras 2011 hash",
             SamplerName::SobolPixelXor => "per-pixel Sobol with a random digital shift per pixel",
+            SamplerName::Pmj02 => "progressive multi-jittered (0,2) sets (Christensen et al. 2018)",
+            SamplerName::Pmj02Bn => "pmj02 with best-candidate blue-noise placement (pmj02bn)",
         }
     }
 
@@ -300,6 +314,8 @@ impl SamplerConfig {
                 BurleySampler::new(spp, NestedHash::LaineKarras, seed).map(Sampler::from)
             }
             SamplerName::SobolPixelXor => PixelXorSampler::new(spp, seed).map(Sampler::from),
+            SamplerName::Pmj02 => PmjSampler::new(spp, PmjKind::Pmj02, seed).map(Sampler::from),
+            SamplerName::Pmj02Bn => PmjSampler::new(spp, PmjKind::Pmj02Bn, seed).map(Sampler::from),
         }
     }
 }
