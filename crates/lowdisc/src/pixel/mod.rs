@@ -97,6 +97,15 @@ impl<T: WordSampler> PixelSampler for T {
 /// the strategy carried a seed of its own, so every value stays as pinned.
 pub(crate) const SEED_PAD: u64 = 0;
 
+/// The key of the next `n` dimensions (the counter's value), advancing the
+/// counter past them.
+#[inline]
+pub(crate) fn next_key(counter: &mut u32, n: u32) -> u64 {
+    let key = *counter;
+    *counter = key.wrapping_add(n);
+    u64::from(key)
+}
+
 /// Checks that a sampler gets at least one sample per pixel.
 pub(crate) fn check_spp(spp: u32) -> Result<(), crate::Error> {
     if spp == 0 {

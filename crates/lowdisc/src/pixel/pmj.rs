@@ -93,14 +93,12 @@ impl WordSampler for PmjSampler {
     }
 
     fn get_1d_word(&mut self) -> u32 {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(1);
+        let key = super::next_key(&mut self.dimension, 1);
         self.point(key)[0]
     }
 
     fn get_2d_words(&mut self) -> [u32; 2] {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(2);
+        let key = super::next_key(&mut self.dimension, 2);
         self.point(key)
     }
 
