@@ -6,7 +6,7 @@
 
 mod textures;
 
-use super::sink::PbrtLoader;
+use super::loader::PbrtLoader;
 use super::state::MatRef;
 use crate::bsdf::material::textured::{FloatTex, RgbTex, const_float, const_rgb};
 use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};

@@ -19,10 +19,10 @@
 //! file, even inside included files (as pbrt-v4 does).
 
 mod lights;
+mod loader;
 mod materials;
 mod options;
 mod shapes;
-mod sink;
 mod state;
 
 use crate::bsdf::Material;
@@ -31,7 +31,7 @@ use crate::scene::Scene;
 use lowdisc::catalog::SamplerName;
 use std::path::{Path, PathBuf};
 
-pub use sink::PbrtLoader;
+pub use loader::PbrtLoader;
 
 /// Options of [`load_pbrt_scene`].
 #[derive(Clone, Debug, Default)]

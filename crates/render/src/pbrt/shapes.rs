@@ -2,7 +2,7 @@
 //! patch meshes and Loop subdivision surfaces, with their material and area
 //! light.
 
-use super::sink::{PbrtLoader, ShapeDef};
+use super::loader::{PbrtLoader, ShapeDef};
 use super::state::{AreaSpec, MatRef};
 use crate::bsdf::Material;
 use crate::geometry::{

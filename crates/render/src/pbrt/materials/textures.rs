@@ -13,7 +13,7 @@
 
 use super::const_float;
 use crate::math::Vec3;
-use crate::pbrt::sink::PbrtLoader;
+use crate::pbrt::loader::PbrtLoader;
 use crate::spectrum::Rgb;
 use crate::texture::{
     Checker, ColorEncoding, FloatTexture, ImageTexture, SpectrumTexture, TextureEvalContext,
