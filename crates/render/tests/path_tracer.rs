@@ -57,9 +57,7 @@ fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64
 }
 
 fn grey(v: f32) -> Material {
-    Material::Diffuse {
-        reflectance: Rgb::splat(v),
-    }
+    Material::diffuse(Rgb::splat(v))
 }
 
 #[test]

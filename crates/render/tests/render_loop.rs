@@ -131,7 +131,7 @@ fn cornell_box_has_finite_positive_mean_red_left_green_right() {
 /// A diffuse sphere seen by a camera, lit by a point light.
 fn sphere_scene(reflectance: Rgb, with_light: bool) -> lowdisc_render::scene::Scene {
     let mut b = SceneBuilder::new();
-    let m = b.add_material(Material::Diffuse { reflectance });
+    let m = b.add_material(Material::diffuse(reflectance));
     b.add_sphere(
         Sphere::new(Transform::IDENTITY, 1.0, false).unwrap(),
         m,
@@ -185,9 +185,7 @@ fn nonfinite_samples_are_counted_and_never_written() {
     // one bounce overflows to infinity: those samples must be counted and
     // dropped (the film treats NaN the same way).
     let mut b = SceneBuilder::new();
-    let m = b.add_material(Material::Diffuse {
-        reflectance: Rgb::splat(0.9),
-    });
+    let m = b.add_material(Material::diffuse(Rgb::splat(0.9)));
     let e = Emission {
         l: Rgb::splat(0.8 * f32::MAX),
         two_sided: false,

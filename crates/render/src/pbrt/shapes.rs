@@ -167,9 +167,8 @@ impl PbrtLoader {
             MatRef::Interface => None,
             MatRef::Default => Some(*self.default_material.get_or_insert_with(|| {
                 self.counts.materials += 1;
-                self.builder.add_material(Material::Diffuse {
-                    reflectance: Rgb::splat(0.5),
-                })
+                self.builder
+                    .add_material(Material::diffuse(Rgb::splat(0.5)))
             })),
         }
     }
