@@ -33,10 +33,10 @@
 
 use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
+use crate::error::RenderError;
 use crate::filter::Filter;
 use crate::geometry::{MeshData, TriangleMesh};
 use crate::math::{Point3, Transform, Vec3};
-use crate::render::RenderError;
 use crate::scene::{CameraSpec, Emission, FilmSettings, Scene, SceneBuilder};
 use crate::spectrum::Rgb;
 

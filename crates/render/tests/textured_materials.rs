@@ -113,17 +113,13 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
     ));
     let scene = b.build().unwrap();
     let opts = RenderOptions {
-        sampler: SamplerName::ZSobol,
-        seed: 11,
-        spp: 64,
         integrator: PathIntegrator {
             max_depth: 1,
             strategy: LightStrategy::Mis,
-            bsdf_seed: 0,
         },
         threads: Some(2),
         tile_size: 8,
-        ..RenderOptions::default()
+        ..RenderOptions::new(SamplerName::ZSobol, 11, 64)
     };
     let out = render(&scene, &opts, &NoProgress).unwrap();
     let px = |x: usize, y: usize| Rgb::from_array(out.image.get(x, y).unwrap());

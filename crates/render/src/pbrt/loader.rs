@@ -6,10 +6,10 @@ use super::state::{MatRef, StateStack, pbrt_matrix};
 use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
+use crate::error::RenderError;
 use crate::film::FilmParams;
 use crate::filter::Filter;
 use crate::math::Transform;
-use crate::render::RenderError;
 use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
 use crate::texture::TextureRegistry;
 use pbrt_format::{

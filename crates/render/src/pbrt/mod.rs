@@ -26,7 +26,7 @@ mod shapes;
 mod state;
 
 use crate::bsdf::Material;
-use crate::render::RenderError;
+use crate::error::RenderError;
 use crate::scene::Scene;
 use lowdisc::catalog::SamplerName;
 use std::path::{Path, PathBuf};
@@ -105,6 +105,12 @@ pub fn load_pbrt_scene(path: &Path, options: &LoadOptions) -> Result<LoadedScene
     pbrt_format::parse_file(path, &mut loader)
         .map_err(|e| RenderError::InvalidScene(e.to_string()))?;
     loader.finish()
+}
+
+/// Loads a pbrt-v4 scene file with default [`LoadOptions`], dropping its
+/// warnings and settings (use [`load_pbrt_scene`] to get them).
+pub fn load_scene_file(path: &Path) -> Result<Scene, RenderError> {
+    load_pbrt_scene(path, &LoadOptions::default()).map(|l| l.scene)
 }
 
 /// A material for a `measured` BSDF file: [`Material::measured_fallback`].
