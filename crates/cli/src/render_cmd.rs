@@ -9,7 +9,7 @@
 //! the time per phase to stdout. A scene file's own settings (sampler, spp,
 //! maxdepth, resolution, output file) apply unless a flag overrides them.
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -231,11 +231,14 @@ struct Phases {
 /// Prints each distinct warning once to stderr (nothing with `--quiet`).
 fn warn_once(seen: &mut HashSet<String>, quiet: bool, warning: &str) {
     if !quiet && seen.insert(warning.to_string()) {
-        if warning.contains("warning:") {
-            eprintln!("{warning}");
+        let prefix = if warning.contains("warning:") {
+            ""
         } else {
-            eprintln!("warning: {warning}");
-        }
+            "warning: "
+        };
+        // A stderr that cannot be written (closed, full) loses the warning,
+        // not the render.
+        let _ = writeln!(std::io::stderr(), "{prefix}{warning}");
     }
 }
 
@@ -345,7 +348,8 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         .with_context(|| format!("cannot write `{}`", output.display()))?;
     phases.write = t2.elapsed();
     if config.stats {
-        print_stats(&scene, &out, &phases);
+        print_stats(std::io::stdout().lock(), &scene, &out, &phases)
+            .context("cannot print the statistics")?;
     }
     Ok(())
 }
@@ -361,27 +365,28 @@ fn progress_bar(config: &RenderConfig) -> Option<ProgressBar> {
     Some(bar)
 }
 
-fn print_stats(scene: &Scene, out: &lowdisc_render::render::RenderOutput, phases: &Phases) {
+fn print_stats(
+    mut w: impl Write,
+    scene: &Scene,
+    out: &lowdisc_render::render::RenderOutput,
+    phases: &Phases,
+) -> std::io::Result<()> {
     let s = &out.stats;
     let b = scene.bvh_stats();
-    println!("primitives        {}", scene.prim_count());
-    println!("lights            {}", scene.lights().len());
-    println!("{b}");
-    println!("samples           {}", s.samples);
-    println!("rays traced       {}", s.rays);
-    println!(
-        "rays/s            {:.0} ({:.2} M)",
-        s.rays_per_second(),
-        s.rays_per_second() / 1e6
-    );
-    println!("nonfinite samples {}", s.nonfinite_samples);
-    println!("threads           {}", s.threads);
+    writeln!(w, "primitives        {}", scene.prim_count())?;
+    writeln!(w, "lights            {}", scene.lights().len())?;
+    writeln!(w, "{b}")?;
+    writeln!(w, "samples           {}", s.samples)?;
+    writeln!(w, "rays traced       {}", s.rays)?;
+    let rate = s.rays_per_second();
+    writeln!(w, "rays/s            {rate:.0} ({:.2} M)", rate / 1e6)?;
+    writeln!(w, "nonfinite samples {}", s.nonfinite_samples)?;
+    writeln!(w, "threads           {}", s.threads)?;
     let build = b.build_time.as_secs_f64();
-    println!(
-        "time load         {:.3} s",
-        (phases.load.as_secs_f64() - build).max(0.0)
-    );
-    println!("time build (BVH)  {build:.3} s");
-    println!("time render       {:.3} s", phases.render.as_secs_f64());
-    println!("time write        {:.3} s", phases.write.as_secs_f64());
+    let load = (phases.load.as_secs_f64() - build).max(0.0);
+    writeln!(w, "time load         {load:.3} s")?;
+    writeln!(w, "time build (BVH)  {build:.3} s")?;
+    writeln!(w, "time render       {:.3} s", phases.render.as_secs_f64())?;
+    writeln!(w, "time write        {:.3} s", phases.write.as_secs_f64())?;
+    w.flush()
 }

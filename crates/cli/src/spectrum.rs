@@ -7,7 +7,7 @@ use std::io::Write;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use clap::Args;
 use lowdisc::catalog::{Order, SamplerConfig};
 use lowdisc_metrics::{RadialSpectrum, radial_power_spectrum};
@@ -181,8 +181,7 @@ pub fn run(config: &SpectrumConfig, mut out: impl Write) -> Result<()> {
     }
     compose::grid(rows).save(&config.output)?;
     let csv = csv_path(&config.output);
-    std::fs::write(&csv, to_csv(&entries))
-        .with_context(|| format!("cannot write `{}`", csv.display()))?;
+    lowdisc_outfile::write_bytes(&csv, to_csv(&entries).as_bytes())?;
     if config.json {
         serde_json::to_writer_pretty(&mut out, &entries)?;
         writeln!(out)?;
