@@ -193,7 +193,7 @@ fn chart(
 }
 
 fn write_file(path: &Path, contents: &str) -> Result<()> {
-    Ok(lowdisc_outfile::write_bytes(path, contents.as_bytes())?)
+    Ok(lowdisc_files::write_bytes(path, contents.as_bytes())?)
 }
 
 /// Writes `claim.md`, `claim.json` and the charts; returns the paths written.

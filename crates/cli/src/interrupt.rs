@@ -1,7 +1,7 @@
 //! SIGINT and SIGTERM: remove the temporary files of writes in progress,
 //! then exit with the shell's status for the signal (130 or 143).
 //!
-//! Every output goes through `lowdisc-outfile`, whose registry knows the
+//! Every output goes through `lowdisc-files`, whose registry knows the
 //! live temporaries; a watcher thread waits for the signals and cleans up.
 //! Destinations keep their old contents, since the rename never happens.
 
@@ -18,7 +18,7 @@ pub fn install() -> io::Result<()> {
         .name("signals".into())
         .spawn(move || {
             if let Some(signal) = signals.forever().next() {
-                lowdisc_outfile::remove_live_temporaries();
+                lowdisc_files::remove_live_temporaries();
                 std::process::exit(128 + signal);
             }
         })?;

@@ -18,6 +18,7 @@ mod discrepancy;
 mod experiment;
 mod figure;
 mod interrupt;
+mod limits;
 mod metric_rows;
 mod output;
 mod parse;
@@ -25,6 +26,7 @@ mod plots;
 mod pointfile;
 mod points;
 mod render_cmd;
+mod render_stats;
 mod spectrum;
 
 use std::io::{self, Write};

@@ -84,10 +84,10 @@ impl std::error::Error for Error {
     }
 }
 
-/// Writes `bytes` to `path` atomically (see [`lowdisc_outfile::write_bytes`]):
+/// Writes `bytes` to `path` atomically (see [`lowdisc_files::write_bytes`]):
 /// `path` holds its old contents or the complete new ones, never a mix.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    lowdisc_outfile::write_bytes(path, bytes).map_err(|e| Error::Io {
+    lowdisc_files::write_bytes(path, bytes).map_err(|e| Error::Io {
         path: path.display().to_string(),
         source: std::io::Error::new(e.io_error().kind(), e.io_error().to_string()),
     })

@@ -1,5 +1,5 @@
 //! Atomic file output in this crate's error type: the image writers go
-//! through `lowdisc-outfile` (temporary sibling, fsync, rename), which this
+//! through `lowdisc-files` (temporary sibling, fsync, rename), which this
 //! module adapts to [`ImageError`].
 
 use std::fs::File;
@@ -8,8 +8,8 @@ use std::path::Path;
 
 use crate::error::ImageError;
 
-impl From<lowdisc_outfile::Error> for ImageError {
-    fn from(err: lowdisc_outfile::Error) -> Self {
+impl From<lowdisc_files::Error> for ImageError {
+    fn from(err: lowdisc_files::Error) -> Self {
         ImageError::io(err.io_error()).with_path(err.path())
     }
 }
@@ -17,13 +17,13 @@ impl From<lowdisc_outfile::Error> for ImageError {
 /// Writes a file atomically: `write` fills a buffered temporary file next to
 /// `path`; on success the file is flushed, fsynced and renamed to `path`, on
 /// any error the temporary file is removed and an existing `path` is left as
-/// it was (see [`lowdisc_outfile::write_with`]). Errors carry `path`.
+/// it was (see [`lowdisc_files::write_with`]). Errors carry `path`.
 pub fn write_atomically(
     path: impl AsRef<Path>,
     write: impl FnOnce(&mut BufWriter<File>) -> Result<(), ImageError>,
 ) -> Result<(), ImageError> {
     let path = path.as_ref();
-    lowdisc_outfile::write_with(path, write).map_err(|e| match e.path() {
+    lowdisc_files::write_with(path, write).map_err(|e| match e.path() {
         Some(_) => e,
         None => e.with_path(path),
     })

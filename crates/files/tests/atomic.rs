@@ -4,7 +4,7 @@
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
-use lowdisc_outfile::{Error, write_bytes, write_with};
+use lowdisc_files::{Error, write_bytes, write_with};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))

@@ -5,7 +5,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use lowdisc_outfile::{remove_live_temporaries, write_bytes, write_with};
+use lowdisc_files::{remove_live_temporaries, write_bytes, write_with};
 
 #[test]
 fn removing_live_temporaries_deletes_the_write_in_progress_and_refuses_new_ones() {

@@ -1,29 +1,10 @@
-//! Atomic output files: every file lowdisc writes for a user goes through
-//! [`write_with`] or [`write_bytes`], so a destination holds either its old
-//! contents or the complete new ones, never a truncated mix.
-//!
-//! A write creates a temporary sibling `.NAME.RANDOM.tmp` in the
-//! destination's folder (a fresh random name, created exclusively, so
-//! concurrent writers and processes never share one), fills it through a
-//! buffered writer, flushes and fsyncs it, renames it over the destination
-//! and fsyncs the folder so the rename itself survives a crash. On any error
-//! the temporary file is removed and the destination is left untouched.
-//!
-//! Live temporaries are kept in a process-wide registry (module
-//! [`registry`]): a binary's SIGINT/SIGTERM handler calls
-//! [`remove_live_temporaries`] before exiting, so an interrupted write leaves
-//! nothing behind. The library itself never installs handlers, prints or
-//! exits.
-
-mod error;
-pub mod registry;
+//! Atomic writing of output files (see the crate documentation).
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-pub use error::Error;
-pub use registry::remove_live_temporaries;
+use crate::{Error, registry};
 
 /// Writes `path` atomically: `write` fills a buffered temporary file next to
 /// `path`; once it returns `Ok` the data is flushed, fsynced and renamed over
