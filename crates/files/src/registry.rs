@@ -92,9 +92,12 @@ pub(crate) fn create_temporary(destination: &Path) -> Result<(File, Temporary), 
     if reg.closed {
         return Err(exiting(destination));
     }
-    let file = builder
-        .tempfile_in(folder_of(destination))
-        .map_err(|e| Error::new(destination, "cannot write", e))?;
+    let file = builder.tempfile_in(folder_of(destination)).map_err(|e| {
+        // The destination is what the user named; the random temporary
+        // name that `tempfile` adds to its message would only confuse.
+        let e = e.raw_os_error().map_or(e, io::Error::from_raw_os_error);
+        Error::new(destination, "cannot write", e)
+    })?;
     let (file, path) = file.into_parts();
     reg.live.push(path.to_path_buf());
     let temporary = Temporary {
