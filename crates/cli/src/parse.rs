@@ -21,11 +21,7 @@ pub fn sampler_name(text: &str) -> Result<SamplerName> {
 
 /// A paper-permutation threshold in `[0, 1]` (NaN rejected).
 pub fn threshold(value: f64) -> Result<f64> {
-    if (0.0..=1.0).contains(&value) {
-        Ok(value)
-    } else {
-        bail!("--threshold must lie in [0, 1], got {value}")
-    }
+    lowdisc::paper::check_threshold(value).map_err(|e| anyhow!("--threshold: {e}"))
 }
 
 fn number(text: &str, what: &str, whole: &str, flag: &str) -> Result<u32> {

@@ -13,7 +13,7 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
@@ -21,7 +21,7 @@ use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::film::PEAK_BYTES_PER_PIXEL;
 use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
-use lowdisc_render::render::{MAX_SPP, MAX_THREADS, Progress, RenderOptions, render};
+use lowdisc_render::render::{MAX_SPP, Progress, RenderOptions, render};
 use lowdisc_render::scene::Scene;
 use std::collections::HashSet;
 
@@ -145,21 +145,7 @@ impl RenderArgs {
             .as_deref()
             .map(parse::sampler_name)
             .transpose()?;
-        if let Some(spp) = self.spp {
-            if spp == 0 || spp > MAX_SPP {
-                bail!("--spp must be between 1 and {MAX_SPP}, got {spp}");
-            }
-        }
-        if let Some(d) = self.maxdepth {
-            if d > MAX_DEPTH_LIMIT {
-                bail!("--maxdepth must be at most {MAX_DEPTH_LIMIT}, got {d}");
-            }
-        }
-        if let Some(t) = self.threads {
-            if t == 0 || t > MAX_THREADS {
-                bail!("--threads must be between 1 and {MAX_THREADS}, got {t}");
-            }
-        }
+        self.check_ranges()?;
         let resolution = self.res.as_deref().map(resolution).transpose()?;
         if self.envmap.is_some() && self.scene.is_none() {
             bail!("--envmap applies to scene files; the built-in Cornell box has no environment");
@@ -183,12 +169,52 @@ impl RenderArgs {
             threads: self.threads,
             envmap: self.envmap,
             output: self.output,
-            threshold: parse::threshold(self.threshold)?,
+            threshold: self.threshold,
             paper_all_dims: self.paper_all_dims,
             stats: self.stats,
             quiet: self.quiet,
             max_memory: self.max_memory,
         })
+    }
+}
+
+impl RenderArgs {
+    /// Checks `--spp`, `--maxdepth`, `--threads` and `--threshold` with
+    /// [`RenderOptions::validate`] (the one definition of their ranges), each
+    /// on the default options, so that the error names the flag.
+    fn check_ranges(&self) -> Result<()> {
+        let base = RenderOptions::default();
+        let check =
+            |flag: &str, opts: RenderOptions| opts.validate().map_err(|e| anyhow!("{flag}: {e}"));
+        let sampler = |spp: u32, threshold: f64| RenderOptions {
+            sampler: SamplerConfig {
+                spp,
+                threshold,
+                ..base.sampler
+            },
+            ..base
+        };
+        if let Some(spp) = self.spp {
+            check("--spp", sampler(spp, base.sampler.threshold))?;
+        }
+        check("--threshold", sampler(base.sampler.spp, self.threshold))?;
+        if let Some(max_depth) = self.maxdepth {
+            let integrator = PathIntegrator {
+                max_depth,
+                ..base.integrator
+            };
+            check("--maxdepth", RenderOptions { integrator, ..base })?;
+        }
+        if self.threads.is_some() {
+            check(
+                "--threads",
+                RenderOptions {
+                    threads: self.threads,
+                    ..base
+                },
+            )?;
+        }
+        Ok(())
     }
 }
 
@@ -287,17 +313,19 @@ fn prepare(
         scene.set_resolution(r)?;
     }
     let options = RenderOptions {
-        sampler: config.sampler.unwrap_or(sampler),
-        seed: config.seed,
-        spp: config.spp.unwrap_or(spp),
+        sampler: SamplerConfig {
+            seed: config.seed,
+            spp: config.spp.unwrap_or(spp),
+            threshold: config.threshold,
+            paper_all_dims: config.paper_all_dims,
+            ..SamplerConfig::new(config.sampler.unwrap_or(sampler))
+        },
         integrator: PathIntegrator {
             max_depth: config.max_depth.unwrap_or(max_depth),
             ..PathIntegrator::default()
         },
         threads: config.threads,
         tile_size: 16,
-        threshold: config.threshold,
-        paper_all_dims: config.paper_all_dims,
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;

@@ -8,9 +8,8 @@
 use std::fmt::Write;
 use std::path::Path;
 
-use crate::call::{Call, CallSink};
 use crate::target::TargetResult;
-use crate::{FileKind, Loc, Param, ParamSet, ParamValues};
+use crate::{Directive, FileKind, Loc, Param, ParamSet, ParamValues, ParserTarget};
 
 /// Values per line in a long parameter list.
 const PER_LINE: usize = 12;
@@ -157,70 +156,69 @@ impl Formatter {
         }
     }
 
-    fn write_call(&mut self, call: &Call) {
-        match call {
-            Call::AttributeEnd | Call::TransformEnd | Call::ObjectEnd => {
+    fn write_directive(&mut self, directive: &Directive) {
+        use Directive as D;
+        match directive {
+            D::AttributeEnd | D::TransformEnd | D::ObjectEnd => {
                 self.depth = self.depth.saturating_sub(1)
             }
-            Call::WorldBegin => self.out.push('\n'),
+            D::WorldBegin => self.out.push('\n'),
             _ => {}
         }
         self.line_start();
-        match call {
-            Call::Option(p) => {
+        let kw = directive.keyword();
+        let no_params = ParamSet::new();
+        match directive {
+            D::Option(p) => {
                 self.out.push_str("Option ");
                 self.param(p);
             }
-            Call::ColorSpace(n) => self.named("ColorSpace", &[n], &ParamSet::new()),
-            Call::Identity => self.out.push_str("Identity"),
-            Call::Translate(d) => self.triples("Translate", &[d]),
-            Call::Scale(s) => self.triples("Scale", &[s]),
-            Call::Rotate(a, axis) => self.triples("Rotate", &[&[*a], axis]),
-            Call::LookAt(e, l, u) => self.triples("LookAt", &[e, l, u]),
-            Call::ConcatTransform(m) => {
-                self.out.push_str("ConcatTransform ");
+            D::Identity
+            | D::ReverseOrientation
+            | D::WorldBegin
+            | D::AttributeBegin
+            | D::AttributeEnd
+            | D::TransformBegin
+            | D::TransformEnd
+            | D::ObjectEnd => self.out.push_str(kw),
+            D::Translate(v) | D::Scale(v) => self.triples(kw, &[v]),
+            D::Rotate(a, axis) => self.triples(kw, &[&[*a], axis]),
+            D::LookAt(e, l, u) => self.triples(kw, &[e, l, u]),
+            D::TransformTimes(a, b) => self.triples(kw, &[&[*a, *b]]),
+            D::ConcatTransform(m) | D::Transform(m) => {
+                self.out.push_str(kw);
+                self.out.push(' ');
                 self.numbers(m);
             }
-            Call::Transform(m) => {
-                self.out.push_str("Transform ");
-                self.numbers(m);
+            D::ActiveTransform(w) => {
+                let _ = write!(self.out, "{kw} {}", w.keyword());
             }
-            Call::CoordinateSystem(n) => self.named("CoordinateSystem", &[n], &ParamSet::new()),
-            Call::CoordSysTransform(n) => self.named("CoordSysTransform", &[n], &ParamSet::new()),
-            Call::ActiveTransform(w) => {
-                let _ = write!(self.out, "ActiveTransform {}", w.keyword());
-            }
-            Call::TransformTimes(a, b) => self.triples("TransformTimes", &[&[*a, *b]]),
-            Call::ReverseOrientation => self.out.push_str("ReverseOrientation"),
-            Call::Camera(n, p) => self.named("Camera", &[n], p),
-            Call::Film(n, p) => self.named("Film", &[n], p),
-            Call::Sampler(n, p) => self.named("Sampler", &[n], p),
-            Call::Integrator(n, p) => self.named("Integrator", &[n], p),
-            Call::PixelFilter(n, p) => self.named("PixelFilter", &[n], p),
-            Call::Accelerator(n, p) => self.named("Accelerator", &[n], p),
-            Call::MakeNamedMedium(n, p) => self.named("MakeNamedMedium", &[n], p),
-            Call::MediumInterface(i, o) => self.named("MediumInterface", &[i, o], &ParamSet::new()),
-            Call::WorldBegin => self.out.push_str("WorldBegin"),
-            Call::AttributeBegin => self.out.push_str("AttributeBegin"),
-            Call::AttributeEnd => self.out.push_str("AttributeEnd"),
-            Call::TransformBegin => self.out.push_str("TransformBegin"),
-            Call::TransformEnd => self.out.push_str("TransformEnd"),
-            Call::Attribute(n, p) => self.named("Attribute", &[n], p),
-            Call::Shape(n, p) => self.named("Shape", &[n], p),
-            Call::Material(n, p) => self.named("Material", &[n], p),
-            Call::MakeNamedMaterial(n, p) => self.named("MakeNamedMaterial", &[n], p),
-            Call::NamedMaterial(n) => self.named("NamedMaterial", &[n], &ParamSet::new()),
-            Call::Texture(n, t, c, p) => self.named("Texture", &[n, t, c], p),
-            Call::LightSource(n, p) => self.named("LightSource", &[n], p),
-            Call::AreaLightSource(n, p) => self.named("AreaLightSource", &[n], p),
-            Call::ObjectBegin(n) => self.named("ObjectBegin", &[n], &ParamSet::new()),
-            Call::ObjectEnd => self.out.push_str("ObjectEnd"),
-            Call::ObjectInstance(n) => self.named("ObjectInstance", &[n], &ParamSet::new()),
+            D::ColorSpace(n)
+            | D::CoordinateSystem(n)
+            | D::CoordSysTransform(n)
+            | D::NamedMaterial(n)
+            | D::ObjectBegin(n)
+            | D::ObjectInstance(n) => self.named(kw, &[n], &no_params),
+            D::MediumInterface(i, o) => self.named(kw, &[i, o], &no_params),
+            D::Texture(n, t, c, p) => self.named(kw, &[n, t, c], p),
+            D::Camera(n, p)
+            | D::Film(n, p)
+            | D::Sampler(n, p)
+            | D::Integrator(n, p)
+            | D::PixelFilter(n, p)
+            | D::Accelerator(n, p)
+            | D::MakeNamedMedium(n, p)
+            | D::Attribute(n, p)
+            | D::Shape(n, p)
+            | D::Material(n, p)
+            | D::MakeNamedMaterial(n, p)
+            | D::LightSource(n, p)
+            | D::AreaLightSource(n, p) => self.named(kw, &[n], p),
         }
         self.out.push('\n');
         if matches!(
-            call,
-            Call::AttributeBegin | Call::TransformBegin | Call::ObjectBegin(_)
+            directive,
+            D::AttributeBegin | D::TransformBegin | D::ObjectBegin(_)
         ) {
             self.depth += 1;
         }
@@ -235,9 +233,9 @@ impl Formatter {
     }
 }
 
-impl CallSink for Formatter {
-    fn call(&mut self, call: Call, _loc: &Loc) -> TargetResult {
-        self.write_call(&call);
+impl ParserTarget for Formatter {
+    fn directive(&mut self, directive: Directive, _loc: &Loc) -> TargetResult {
+        self.write_directive(&directive);
         Ok(())
     }
 

@@ -1,11 +1,12 @@
 //! Parser for the pbrt-v4 scene-file format, with file:line:column errors.
 //!
 //! As in pbrt-v4, parsing is separate from scene building: [`parse_file`] reads a
-//! scene (following `Include` and `Import`) and calls one method of a
-//! [`ParserTarget`] per directive, with its arguments, a [`ParamSet`] of typed
-//! parameters and the directive's [`Loc`]. A scene builder implements
-//! `ParserTarget`; this crate provides two other targets, [`Recorder`] (keeps every
-//! call as a [`Call`]) and [`Formatter`] (prints the scene back as text).
+//! scene (following `Include` and `Import`) and hands a [`ParserTarget`] one
+//! [`Directive`] per directive: a value with the typed arguments and a
+//! [`ParamSet`] of typed parameters, plus the directive's [`Loc`]. A scene
+//! builder implements `ParserTarget` (one `match` on the directive); this crate
+//! provides two other targets, [`Recorder`] (keeps every directive) and
+//! [`Formatter`] (prints the scene back as text).
 //!
 //! Syntax errors are [`ParseError`]s with an [`ErrorKind`] and a location; the
 //! parser never panics on any input. [`Warnings`] collects deduplicated warnings,
@@ -19,16 +20,16 @@
 //! *main* scene file, even inside included files; builders should do the same.
 //!
 //! ```
-//! use pbrt_format::{parse_str, Call, Recorder};
+//! use pbrt_format::{parse_str, Directive, Recorder};
 //! let mut rec = Recorder::new();
 //! parse_str("WorldBegin\nShape \"sphere\" \"float radius\" [ 2 ]\n", "demo.pbrt", &mut rec)
 //!     .unwrap();
-//! let Call::Shape(ty, params) = &rec.calls[1].0 else { panic!() };
+//! let Directive::Shape(ty, params) = &rec.calls[1].0 else { panic!() };
 //! assert_eq!((ty.as_str(), params.get_float("radius")), ("sphere", Some(2.0)));
 //! assert_eq!(rec.calls[1].1.to_string(), "demo.pbrt:2:1");
 //! ```
 
-mod call;
+mod directive;
 mod error;
 mod format;
 mod param;
@@ -39,7 +40,7 @@ mod target;
 pub mod token;
 mod warnings;
 
-pub use call::{Call, CallSink, Recorder, replay};
+pub use directive::{Directive, Recorder};
 pub use error::{ErrorKind, Loc, ParseError};
 pub use format::{Formatter, format_number, format_string};
 pub use param::{Param, ParamType, ParamValues};

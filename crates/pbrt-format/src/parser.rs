@@ -1,5 +1,5 @@
-//! The directive parser: reads files, follows `Include`/`Import`, and calls the
-//! [`ParserTarget`] once per directive.
+//! The directive parser: reads files, follows `Include`/`Import`, and hands the
+//! [`ParserTarget`] one [`Directive`] per directive.
 //!
 //! Included files are parsed recursively (at most [`MAX_INCLUDE_DEPTH`] deep), each
 //! with its own tokenizer, so a directive never spans two files. A relative
@@ -12,7 +12,9 @@ use std::sync::Arc;
 
 use crate::stream::Stream;
 use crate::token::TokenKind;
-use crate::{ActiveTransform, ErrorKind, FileKind, Loc, ParseError, ParserTarget};
+use crate::{
+    ActiveTransform, Directive, ErrorKind, FileKind, Loc, ParamSet, ParseError, ParserTarget,
+};
 
 /// How deeply `Include`/`Import` may nest before the parser reports
 /// [`ErrorKind::IncludeDepth`] (a file that includes itself, directly or not).
@@ -171,80 +173,74 @@ impl<T: ParserTarget + ?Sized> Parser<'_, T> {
         path: &Path,
         depth: usize,
     ) -> Result<(), ParseError> {
-        let t = &mut *self.target;
-        match word {
-            "AttributeBegin" => t.attribute_begin(loc),
-            "AttributeEnd" => t.attribute_end(loc),
-            "TransformBegin" => t.transform_begin(loc),
-            "TransformEnd" => t.transform_end(loc),
-            "WorldBegin" => t.world_begin(loc),
+        let directive = match word {
+            "AttributeBegin" => Directive::AttributeBegin,
+            "AttributeEnd" => Directive::AttributeEnd,
+            "TransformBegin" => Directive::TransformBegin,
+            "TransformEnd" => Directive::TransformEnd,
+            "WorldBegin" => Directive::WorldBegin,
             "WorldEnd" => {
-                t.warning(loc, "WorldEnd (pbrt-v3) is ignored");
-                Ok(())
+                self.target.warning(loc, "WorldEnd (pbrt-v3) is ignored");
+                return Ok(());
             }
-            "Identity" => t.identity(loc),
-            "ReverseOrientation" => t.reverse_orientation(loc),
-            "ObjectEnd" => t.object_end(loc),
-            "Translate" => t.translate(s.numbers(loc, word)?, loc),
-            "Scale" => t.scale(s.numbers(loc, word)?, loc),
+            "Identity" => Directive::Identity,
+            "ReverseOrientation" => Directive::ReverseOrientation,
+            "ObjectEnd" => Directive::ObjectEnd,
+            "Translate" => Directive::Translate(s.numbers(loc, word)?),
+            "Scale" => Directive::Scale(s.numbers(loc, word)?),
             "Rotate" => {
                 let [a, x, y, z] = s.numbers(loc, word)?;
-                t.rotate(a, [x, y, z], loc)
+                Directive::Rotate(a, [x, y, z])
             }
             "LookAt" => {
                 let [ex, ey, ez, lx, ly, lz, ux, uy, uz] = s.numbers(loc, word)?;
-                t.look_at([ex, ey, ez], [lx, ly, lz], [ux, uy, uz], loc)
+                Directive::LookAt([ex, ey, ez], [lx, ly, lz], [ux, uy, uz])
             }
             "TransformTimes" => {
                 let [a, b] = s.numbers(loc, word)?;
-                t.transform_times(a, b, loc)
+                Directive::TransformTimes(a, b)
             }
-            "Transform" => t.transform(s.matrix(loc, word)?, loc),
-            "ConcatTransform" => t.concat_transform(s.matrix(loc, word)?, loc),
-            "ActiveTransform" => {
-                let what = "StartTime, EndTime or All after ActiveTransform";
-                let tok = s.word_arg(loc, what)?;
-                let which = match tok.text {
-                    "StartTime" => ActiveTransform::StartTime,
-                    "EndTime" => ActiveTransform::EndTime,
-                    "All" => ActiveTransform::All,
-                    other => {
-                        let msg = format!("expected {what}, found '{other}'");
-                        return Err(ParseError::new(
-                            ErrorKind::UnexpectedToken,
-                            &s.loc(&tok),
-                            msg,
-                        ));
-                    }
-                };
-                t.active_transform(which, loc)
+            "Transform" => Directive::Transform(s.matrix(loc, word)?),
+            "ConcatTransform" => Directive::ConcatTransform(s.matrix(loc, word)?),
+            "ActiveTransform" => Directive::ActiveTransform(active_transform(s, loc)?),
+            "Option" => Directive::Option(s.param()?),
+            "ColorSpace" => {
+                Directive::ColorSpace(s.string_arg(loc, "a color space name")?.into_owned())
             }
-            "Option" => t.option(s.param()?, loc),
-            "ColorSpace" => t.color_space(&s.string_arg(loc, "a color space name")?, loc),
-            "CoordinateSystem" => {
-                t.coordinate_system(&s.string_arg(loc, "a coordinate system name")?, loc)
+            "CoordinateSystem" => Directive::CoordinateSystem(
+                s.string_arg(loc, "a coordinate system name")?.into_owned(),
+            ),
+            "CoordSysTransform" => Directive::CoordSysTransform(
+                s.string_arg(loc, "a coordinate system name")?.into_owned(),
+            ),
+            "NamedMaterial" => {
+                Directive::NamedMaterial(s.string_arg(loc, "a material name")?.into_owned())
             }
-            "CoordSysTransform" => {
-                t.coord_sys_transform(&s.string_arg(loc, "a coordinate system name")?, loc)
+            "ObjectBegin" => {
+                Directive::ObjectBegin(s.string_arg(loc, "an object name")?.into_owned())
             }
-            "NamedMaterial" => t.named_material(&s.string_arg(loc, "a material name")?, loc),
-            "ObjectBegin" => t.object_begin(&s.string_arg(loc, "an object name")?, loc),
-            "ObjectInstance" => t.object_instance(&s.string_arg(loc, "an object name")?, loc),
+            "ObjectInstance" => {
+                Directive::ObjectInstance(s.string_arg(loc, "an object name")?.into_owned())
+            }
             "MediumInterface" => {
-                let inside = s.string_arg(loc, "a medium name")?;
+                let inside = s.string_arg(loc, "a medium name")?.into_owned();
                 let outside = match s.peek()? {
                     Some(tok) if tok.kind == TokenKind::String => {
-                        s.string_arg(loc, "a medium name")?
+                        s.string_arg(loc, "a medium name")?.into_owned()
                     }
                     _ => inside.clone(),
                 };
-                t.medium_interface(&inside, &outside, loc)
+                Directive::MediumInterface(inside, outside)
             }
             "Texture" => {
-                let name = s.string_arg(loc, "a texture name")?;
-                let ty = s.string_arg(loc, "a texture type (\"float\" or \"spectrum\")")?;
-                let class = s.string_arg(loc, "a texture class such as \"imagemap\"")?;
-                t.texture(&name, &ty, &class, s.params()?, loc)
+                let name = s.string_arg(loc, "a texture name")?.into_owned();
+                let ty = s
+                    .string_arg(loc, "a texture type (\"float\" or \"spectrum\")")?
+                    .into_owned();
+                let class = s
+                    .string_arg(loc, "a texture class such as \"imagemap\"")?
+                    .into_owned();
+                Directive::Texture(name, ty, class, s.params()?)
             }
             "Include" | "Import" => {
                 let name = s.string_arg(loc, "a file name")?;
@@ -253,42 +249,11 @@ impl<T: ParserTarget + ?Sized> Parser<'_, T> {
                 } else {
                     FileKind::Import
                 };
-                self.include(&name, kind, loc, path, depth)
+                return self.include(&name, kind, loc, path, depth);
             }
-            _ => self.named_directive(word, s, loc),
-        }
-    }
-
-    /// Directives of the form `Keyword "name-or-type" params`.
-    fn named_directive(
-        &mut self,
-        word: &str,
-        s: &mut Stream<'_>,
-        loc: &Loc,
-    ) -> Result<(), ParseError> {
-        type Method<T> = fn(&mut T, &str, crate::ParamSet, &Loc) -> Result<(), ParseError>;
-        let (method, what): (Method<T>, &str) = match word {
-            "Shape" => (T::shape, "a shape type"),
-            "Material" => (T::material, "a material type"),
-            "MakeNamedMaterial" => (T::make_named_material, "a material name"),
-            "LightSource" => (T::light_source, "a light type"),
-            "AreaLightSource" => (T::area_light_source, "an area light type"),
-            "Camera" => (T::camera, "a camera type"),
-            "Film" => (T::film, "a film type"),
-            "Sampler" => (T::sampler, "a sampler type"),
-            "Integrator" => (T::integrator, "an integrator type"),
-            "PixelFilter" => (T::pixel_filter, "a filter type"),
-            "Accelerator" => (T::accelerator, "an accelerator type"),
-            "MakeNamedMedium" => (T::make_named_medium, "a medium name"),
-            "Attribute" => (T::attribute, "an attribute target such as \"shape\""),
-            _ => {
-                let msg = format!("unknown directive '{word}'");
-                return Err(ParseError::new(ErrorKind::UnknownDirective, loc, msg));
-            }
+            _ => named_directive(word, s, loc)?,
         };
-        let name = s.string_arg(loc, &format!("{what} after {word}"))?;
-        let params = s.params()?;
-        method(self.target, &name, params, loc)
+        self.target.directive(directive, loc)
     }
 
     fn include(
@@ -330,4 +295,53 @@ impl<T: ParserTarget + ?Sized> Parser<'_, T> {
         }
         local
     }
+}
+
+/// The argument of `ActiveTransform`.
+fn active_transform(s: &mut Stream<'_>, loc: &Loc) -> Result<ActiveTransform, ParseError> {
+    let what = "StartTime, EndTime or All after ActiveTransform";
+    let tok = s.word_arg(loc, what)?;
+    match tok.text {
+        "StartTime" => Ok(ActiveTransform::StartTime),
+        "EndTime" => Ok(ActiveTransform::EndTime),
+        "All" => Ok(ActiveTransform::All),
+        other => {
+            let msg = format!("expected {what}, found '{other}'");
+            Err(ParseError::new(
+                ErrorKind::UnexpectedToken,
+                &s.loc(&tok),
+                msg,
+            ))
+        }
+    }
+}
+
+/// Directives of the form `Keyword "name-or-type" params`.
+fn named_directive(word: &str, s: &mut Stream<'_>, loc: &Loc) -> Result<Directive, ParseError> {
+    type Make = fn(String, ParamSet) -> Directive;
+    let (make, what): (Make, &str) = match word {
+        "Shape" => (Directive::Shape, "a shape type"),
+        "Material" => (Directive::Material, "a material type"),
+        "MakeNamedMaterial" => (Directive::MakeNamedMaterial, "a material name"),
+        "LightSource" => (Directive::LightSource, "a light type"),
+        "AreaLightSource" => (Directive::AreaLightSource, "an area light type"),
+        "Camera" => (Directive::Camera, "a camera type"),
+        "Film" => (Directive::Film, "a film type"),
+        "Sampler" => (Directive::Sampler, "a sampler type"),
+        "Integrator" => (Directive::Integrator, "an integrator type"),
+        "PixelFilter" => (Directive::PixelFilter, "a filter type"),
+        "Accelerator" => (Directive::Accelerator, "an accelerator type"),
+        "MakeNamedMedium" => (Directive::MakeNamedMedium, "a medium name"),
+        "Attribute" => (
+            Directive::Attribute,
+            "an attribute target such as \"shape\"",
+        ),
+        _ => {
+            let msg = format!("unknown directive '{word}'");
+            return Err(ParseError::new(ErrorKind::UnknownDirective, loc, msg));
+        }
+    };
+    let name = s.string_arg(loc, &format!("{what} after {word}"))?;
+    let params = s.params()?;
+    Ok(make(name.into_owned(), params))
 }

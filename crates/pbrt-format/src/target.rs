@@ -1,16 +1,14 @@
 //! [`ParserTarget`]: the interface between the parser and whoever consumes a scene.
 //!
-//! As in pbrt-v4, the parser knows only syntax: it calls one method per directive,
-//! in file order, with the directive's arguments, its [`ParamSet`] and the
-//! [`Loc`] of the directive's keyword. Graphics state, named objects and
-//! scene-building errors belong to the target. A target method returning an error
-//! stops the parse, and the error is returned from [`crate::parse_file`].
-//!
-//! All numbers are `f64` exactly as written (the parser does not round to `f32`).
+//! As in pbrt-v4, the parser knows only syntax: it hands the target one
+//! [`Directive`] per directive, in file order, with the [`Loc`] of the
+//! directive's keyword. Graphics state, named objects and scene-building errors
+//! belong to the target. A target returning an error stops the parse, and the
+//! error is returned from [`crate::parse_file`].
 
 use std::path::Path;
 
-use crate::{Loc, Param, ParamSet, ParseError};
+use crate::{Directive, Loc, ParseError};
 
 /// Result type of every target method.
 pub type TargetResult = Result<(), ParseError>;
@@ -52,104 +50,33 @@ pub enum FileKind {
     Import,
 }
 
-/// Receives the directives of a scene, one method per directive.
+/// Receives the directives of a scene, in file order, one [`Directive`] value
+/// per directive.
 ///
-/// Every method gets the location of the directive keyword. Methods taking a
-/// [`ParamSet`] receive it by value (it remembers which parameters lookups used;
-/// see [`ParamSet::warn_unused`]). Only `file_begin`, `file_end` and
-/// `end_of_files` have default (empty) implementations.
+/// Every call gets the location of the directive keyword. Only `file_begin`,
+/// `file_end` and `end_of_files` have default (empty) implementations.
 ///
-/// Implementing [`crate::CallSink`] instead gives a type this trait through a
-/// blanket impl, receiving every directive as one [`crate::Call`] value.
+/// ```
+/// use pbrt_format::{Directive, Loc, ParserTarget, TargetResult, parse_str};
+/// #[derive(Default)]
+/// struct Spheres(usize);
+/// impl ParserTarget for Spheres {
+///     fn directive(&mut self, directive: Directive, _loc: &Loc) -> TargetResult {
+///         if let Directive::Shape(ty, _) = &directive {
+///             self.0 += usize::from(ty == "sphere");
+///         }
+///         Ok(())
+///     }
+///     fn warning(&mut self, _loc: &Loc, _message: &str) {}
+/// }
+/// let mut spheres = Spheres::default();
+/// parse_str("Shape \"sphere\"\nShape \"disk\"", "s.pbrt", &mut spheres).unwrap();
+/// assert_eq!(spheres.0, 1);
+/// ```
 pub trait ParserTarget {
-    /// `Option "type name" value`: a global rendering option (e.g. `"bool
-    /// disablepixeljitter" true`), as a single parameter.
-    fn option(&mut self, param: Param, loc: &Loc) -> TargetResult;
-    /// `ColorSpace "name"`.
-    fn color_space(&mut self, name: &str, loc: &Loc) -> TargetResult;
-    /// `Identity`.
-    fn identity(&mut self, loc: &Loc) -> TargetResult;
-    /// `Translate dx dy dz`.
-    fn translate(&mut self, d: [f64; 3], loc: &Loc) -> TargetResult;
-    /// `Scale sx sy sz`.
-    fn scale(&mut self, s: [f64; 3], loc: &Loc) -> TargetResult;
-    /// `Rotate angle_degrees ax ay az`.
-    fn rotate(&mut self, angle_deg: f64, axis: [f64; 3], loc: &Loc) -> TargetResult;
-    /// `LookAt ex ey ez  lx ly lz  ux uy uz`.
-    fn look_at(&mut self, eye: [f64; 3], look: [f64; 3], up: [f64; 3], loc: &Loc) -> TargetResult;
-    /// `ConcatTransform [16 numbers]`, in file order (pbrt's column-major layout:
-    /// elements 12..15 hold the translation).
-    fn concat_transform(&mut self, m: [f64; 16], loc: &Loc) -> TargetResult;
-    /// `Transform [16 numbers]`, in file order (as for `concat_transform`).
-    fn transform(&mut self, m: [f64; 16], loc: &Loc) -> TargetResult;
-    /// `CoordinateSystem "name"`.
-    fn coordinate_system(&mut self, name: &str, loc: &Loc) -> TargetResult;
-    /// `CoordSysTransform "name"` (`"camera"` and `"world"` are predefined by pbrt).
-    fn coord_sys_transform(&mut self, name: &str, loc: &Loc) -> TargetResult;
-    /// `ActiveTransform StartTime|EndTime|All`.
-    fn active_transform(&mut self, which: ActiveTransform, loc: &Loc) -> TargetResult;
-    /// `TransformTimes start end`.
-    fn transform_times(&mut self, start: f64, end: f64, loc: &Loc) -> TargetResult;
-    /// `ReverseOrientation`.
-    fn reverse_orientation(&mut self, loc: &Loc) -> TargetResult;
-    /// `Camera "type" params`.
-    fn camera(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `Film "type" params`.
-    fn film(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `Sampler "type" params`.
-    fn sampler(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `Integrator "type" params`.
-    fn integrator(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `PixelFilter "type" params`.
-    fn pixel_filter(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `Accelerator "type" params`.
-    fn accelerator(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `MakeNamedMedium "name" params` (the medium type is `"string type"`).
-    fn make_named_medium(&mut self, name: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `MediumInterface "inside" "outside"`; a single name sets both.
-    fn medium_interface(&mut self, inside: &str, outside: &str, loc: &Loc) -> TargetResult;
-    /// `WorldBegin`.
-    fn world_begin(&mut self, loc: &Loc) -> TargetResult;
-    /// `AttributeBegin`.
-    fn attribute_begin(&mut self, loc: &Loc) -> TargetResult;
-    /// `AttributeEnd`.
-    fn attribute_end(&mut self, loc: &Loc) -> TargetResult;
-    /// `TransformBegin` (deprecated in pbrt-v4, which parses it as `AttributeBegin`;
-    /// strictly it saves only the transformation).
-    fn transform_begin(&mut self, loc: &Loc) -> TargetResult;
-    /// `TransformEnd` (see [`ParserTarget::transform_begin`]).
-    fn transform_end(&mut self, loc: &Loc) -> TargetResult;
-    /// `Attribute "shape"|"light"|"material"|"medium"|"texture" params`: default
-    /// parameters for later directives of that kind.
-    fn attribute(&mut self, target: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `Shape "type" params`.
-    fn shape(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `Material "type" params`.
-    fn material(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `MakeNamedMaterial "name" params` (the material type is `"string type"`).
-    fn make_named_material(&mut self, name: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `NamedMaterial "name"`.
-    fn named_material(&mut self, name: &str, loc: &Loc) -> TargetResult;
-    /// `Texture "name" "type" "class" params`; `ty` is `"float"` or `"spectrum"`
-    /// (pbrt-v3 files may say `"color"`), `class` is e.g. `"imagemap"`.
-    fn texture(
-        &mut self,
-        name: &str,
-        ty: &str,
-        class: &str,
-        params: ParamSet,
-        loc: &Loc,
-    ) -> TargetResult;
-    /// `LightSource "type" params`.
-    fn light_source(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `AreaLightSource "type" params`.
-    fn area_light_source(&mut self, ty: &str, params: ParamSet, loc: &Loc) -> TargetResult;
-    /// `ObjectBegin "name"`.
-    fn object_begin(&mut self, name: &str, loc: &Loc) -> TargetResult;
-    /// `ObjectEnd`.
-    fn object_end(&mut self, loc: &Loc) -> TargetResult;
-    /// `ObjectInstance "name"`.
-    fn object_instance(&mut self, name: &str, loc: &Loc) -> TargetResult;
+    /// One directive (everything but `Include`, `Import` and the ignored
+    /// `WorldEnd`, which the parser handles itself).
+    fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult;
     /// A non-fatal problem the parser noticed (e.g. the pbrt-v3 `WorldEnd`, which is
     /// ignored). The target decides whether and how to report it.
     fn warning(&mut self, loc: &Loc, message: &str);

@@ -1,11 +1,9 @@
-//! A target implementing [`ParserTarget`] directly (as a scene builder will, in
-//! another crate): a tiny graphics-state tracker that checks block nesting, keeps
-//! the current material, and warns about unused parameters.
+//! A target as a scene builder writes one (in another crate): a tiny
+//! graphics-state tracker that matches on the [`Directive`], checks block
+//! nesting, keeps the current material, and warns about unused parameters.
 
-use pbrt_format::{
-    ActiveTransform, ErrorKind, Loc, Param, ParamSet, ParseError, ParserTarget, TargetResult,
-    Warnings, parse_str,
-};
+use pbrt_format::{Directive, ErrorKind, Loc, ParamSet, ParseError, ParserTarget, TargetResult};
+use pbrt_format::{Warnings, parse_str};
 
 #[derive(Default)]
 struct Tracker {
@@ -17,151 +15,57 @@ struct Tracker {
 }
 
 impl Tracker {
-    fn ignore(&mut self, loc: &Loc, what: &str) -> TargetResult {
+    fn ignore(&mut self, loc: &Loc, what: &str) {
         self.warnings
             .warn_once(loc, format!("{what} is not supported"));
-        Ok(())
     }
-    fn ignore_params(&mut self, loc: &Loc, what: &str, params: ParamSet) -> TargetResult {
+    fn ignore_params(&mut self, loc: &Loc, what: &str, params: ParamSet) {
         params.warn_unused(what, &mut self.warnings);
         self.ignore(loc, what)
     }
 }
 
 impl ParserTarget for Tracker {
-    fn option(&mut self, _p: Param, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "Option")
-    }
-    fn color_space(&mut self, _n: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ColorSpace")
-    }
-    fn identity(&mut self, _loc: &Loc) -> TargetResult {
-        self.translated = [0.0; 3];
-        Ok(())
-    }
-    fn translate(&mut self, d: [f64; 3], _loc: &Loc) -> TargetResult {
-        (0..3).for_each(|i| self.translated[i] += d[i]);
-        Ok(())
-    }
-    fn scale(&mut self, _s: [f64; 3], loc: &Loc) -> TargetResult {
-        self.ignore(loc, "Scale")
-    }
-    fn rotate(&mut self, _a: f64, _axis: [f64; 3], loc: &Loc) -> TargetResult {
-        self.ignore(loc, "Rotate")
-    }
-    fn look_at(&mut self, _e: [f64; 3], _l: [f64; 3], _u: [f64; 3], loc: &Loc) -> TargetResult {
-        self.ignore(loc, "LookAt")
-    }
-    fn concat_transform(&mut self, _m: [f64; 16], loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ConcatTransform")
-    }
-    fn transform(&mut self, _m: [f64; 16], loc: &Loc) -> TargetResult {
-        self.ignore(loc, "Transform")
-    }
-    fn coordinate_system(&mut self, _n: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "CoordinateSystem")
-    }
-    fn coord_sys_transform(&mut self, _n: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "CoordSysTransform")
-    }
-    fn active_transform(&mut self, _w: ActiveTransform, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ActiveTransform")
-    }
-    fn transform_times(&mut self, _s: f64, _e: f64, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "TransformTimes")
-    }
-    fn reverse_orientation(&mut self, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ReverseOrientation")
-    }
-    fn camera(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Camera", p)
-    }
-    fn film(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Film", p)
-    }
-    fn sampler(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Sampler", p)
-    }
-    fn integrator(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Integrator", p)
-    }
-    fn pixel_filter(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "PixelFilter", p)
-    }
-    fn accelerator(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Accelerator", p)
-    }
-    fn make_named_medium(&mut self, _n: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "MakeNamedMedium", p)
-    }
-    fn medium_interface(&mut self, _i: &str, _o: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "MediumInterface")
-    }
-    fn world_begin(&mut self, _loc: &Loc) -> TargetResult {
-        Ok(())
-    }
-    fn attribute_begin(&mut self, _loc: &Loc) -> TargetResult {
-        self.stack.push(self.material.clone());
-        Ok(())
-    }
-    fn attribute_end(&mut self, loc: &Loc) -> TargetResult {
-        match self.stack.pop() {
-            Some(m) => {
-                self.material = m;
-                Ok(())
+    fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult {
+        use Directive as D;
+        let keyword = directive.keyword();
+        match directive {
+            D::Identity => self.translated = [0.0; 3],
+            D::Translate(d) => (0..3).for_each(|i| self.translated[i] += d[i]),
+            D::WorldBegin => {}
+            D::AttributeBegin | D::TransformBegin => self.stack.push(self.material.clone()),
+            D::AttributeEnd | D::TransformEnd => match self.stack.pop() {
+                Some(m) => self.material = m,
+                None => {
+                    let msg = "AttributeEnd without AttributeBegin";
+                    return Err(ParseError::scene(loc, msg));
+                }
+            },
+            D::Shape(ty, p) if ty == "sphere" => {
+                self.spheres
+                    .push((p.float_or("radius", 1.0), self.material.clone()));
+                p.warn_unused("Shape \"sphere\"", &mut self.warnings);
             }
-            None => Err(ParseError::scene(
-                loc,
-                "AttributeEnd without AttributeBegin",
-            )),
+            D::Shape(ty, p) => self.ignore_params(loc, &format!("Shape \"{ty}\""), p),
+            D::Material(ty, p) => {
+                p.warn_unused(&format!("Material \"{ty}\""), &mut self.warnings);
+                self.material = ty;
+            }
+            D::Camera(_, p)
+            | D::Film(_, p)
+            | D::Sampler(_, p)
+            | D::Integrator(_, p)
+            | D::PixelFilter(_, p)
+            | D::Accelerator(_, p)
+            | D::MakeNamedMedium(_, p)
+            | D::Attribute(_, p)
+            | D::MakeNamedMaterial(_, p)
+            | D::Texture(_, _, _, p)
+            | D::LightSource(_, p)
+            | D::AreaLightSource(_, p) => self.ignore_params(loc, keyword, p),
+            _ => self.ignore(loc, keyword),
         }
-    }
-    fn transform_begin(&mut self, loc: &Loc) -> TargetResult {
-        self.attribute_begin(loc)
-    }
-    fn transform_end(&mut self, loc: &Loc) -> TargetResult {
-        self.attribute_end(loc)
-    }
-    fn attribute(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Attribute", p)
-    }
-    fn shape(&mut self, ty: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        if ty != "sphere" {
-            return self.ignore_params(loc, &format!("Shape \"{ty}\""), p);
-        }
-        self.spheres
-            .push((p.float_or("radius", 1.0), self.material.clone()));
-        p.warn_unused("Shape \"sphere\"", &mut self.warnings);
         Ok(())
-    }
-    fn material(&mut self, ty: &str, p: ParamSet, _loc: &Loc) -> TargetResult {
-        self.material = ty.to_string();
-        p.warn_unused(&format!("Material \"{ty}\""), &mut self.warnings);
-        Ok(())
-    }
-    fn make_named_material(&mut self, _n: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "MakeNamedMaterial", p)
-    }
-    fn named_material(&mut self, _n: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "NamedMaterial")
-    }
-    fn texture(&mut self, _n: &str, _t: &str, _c: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "Texture", p)
-    }
-    fn light_source(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "LightSource", p)
-    }
-    fn area_light_source(&mut self, _t: &str, p: ParamSet, loc: &Loc) -> TargetResult {
-        self.ignore_params(loc, "AreaLightSource", p)
-    }
-    fn object_begin(&mut self, _n: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ObjectBegin")
-    }
-    fn object_end(&mut self, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ObjectEnd")
-    }
-    fn object_instance(&mut self, _n: &str, loc: &Loc) -> TargetResult {
-        self.ignore(loc, "ObjectInstance")
     }
     fn warning(&mut self, loc: &Loc, message: &str) {
         self.warnings.warn(loc, message);

@@ -4,7 +4,7 @@
 mod common;
 
 use common::{calls, record};
-use pbrt_format::{ActiveTransform, Call, Loc, Param, ParamSet, ParamType, ParamValues};
+use pbrt_format::{ActiveTransform, Directive, Loc, Param, ParamSet, ParamType, ParamValues};
 
 fn param(ty: ParamType, name: &str, values: ParamValues) -> Param {
     Param::new(ty, name, values, Loc::new("expected", 0, 0))
@@ -49,22 +49,22 @@ fn transform_directives() {
         c[i * 5] = 2.0;
     }
     let want = vec![
-        Call::Identity,
-        Call::Translate([1.0, 2.0, 3.0]),
-        Call::Scale([-1.0, 1.0, 0.5]),
-        Call::Rotate(90.0, [0.0, 0.0, 1.0]),
-        Call::LookAt([0.0, 0.0, 5.0], [0.0; 3], [0.0, 1.0, 0.0]),
-        Call::Transform(t),
-        Call::ConcatTransform(c),
-        Call::CoordinateSystem("mine".into()),
-        Call::CoordSysTransform("camera".into()),
-        Call::ActiveTransform(ActiveTransform::StartTime),
-        Call::ActiveTransform(ActiveTransform::EndTime),
-        Call::ActiveTransform(ActiveTransform::All),
-        Call::TransformTimes(0.0, 1.5),
-        Call::ReverseOrientation,
-        Call::TransformBegin,
-        Call::TransformEnd,
+        Directive::Identity,
+        Directive::Translate([1.0, 2.0, 3.0]),
+        Directive::Scale([-1.0, 1.0, 0.5]),
+        Directive::Rotate(90.0, [0.0, 0.0, 1.0]),
+        Directive::LookAt([0.0, 0.0, 5.0], [0.0; 3], [0.0, 1.0, 0.0]),
+        Directive::Transform(t),
+        Directive::ConcatTransform(c),
+        Directive::CoordinateSystem("mine".into()),
+        Directive::CoordSysTransform("camera".into()),
+        Directive::ActiveTransform(ActiveTransform::StartTime),
+        Directive::ActiveTransform(ActiveTransform::EndTime),
+        Directive::ActiveTransform(ActiveTransform::All),
+        Directive::TransformTimes(0.0, 1.5),
+        Directive::ReverseOrientation,
+        Directive::TransformBegin,
+        Directive::TransformEnd,
     ];
     assert_eq!(got, want);
 }
@@ -84,27 +84,27 @@ fn rendering_options_and_world_block() {
     );
     use ParamType as T;
     let want = vec![
-        Call::Option(param(
+        Directive::Option(param(
             T::Bool,
             "disablepixeljitter",
             ParamValues::Bools(vec![true]),
         )),
-        Call::ColorSpace("aces2065-1".into()),
-        Call::Camera(
+        Directive::ColorSpace("aces2065-1".into()),
+        Directive::Camera(
             "perspective".into(),
             set(vec![
                 floats(T::Float, "fov", &[45.0]),
                 floats(T::Float, "lensradius", &[0.1]),
             ]),
         ),
-        Call::Film(
+        Directive::Film(
             "rgb".into(),
             set(vec![
                 param(T::Integer, "xresolution", ParamValues::Ints(vec![640])),
                 strings(T::String, "filename", &["a.exr"]),
             ]),
         ),
-        Call::Sampler(
+        Directive::Sampler(
             "zsobol".into(),
             set(vec![param(
                 T::Integer,
@@ -112,19 +112,19 @@ fn rendering_options_and_world_block() {
                 ParamValues::Ints(vec![16]),
             )]),
         ),
-        Call::Integrator(
+        Directive::Integrator(
             "volpath".into(),
             set(vec![
                 param(T::Integer, "maxdepth", ParamValues::Ints(vec![8])),
                 param(T::Bool, "regularize", ParamValues::Bools(vec![true])),
             ]),
         ),
-        Call::PixelFilter(
+        Directive::PixelFilter(
             "gaussian".into(),
             set(vec![floats(T::Float, "sigma", &[0.5])]),
         ),
-        Call::Accelerator("bvh".into(), ParamSet::new()),
-        Call::WorldBegin,
+        Directive::Accelerator("bvh".into(), ParamSet::new()),
+        Directive::WorldBegin,
     ];
     assert_eq!(got, want);
 }
@@ -147,28 +147,28 @@ fn scene_directives() {
     );
     use ParamType as T;
     let want = vec![
-        Call::AttributeBegin,
-        Call::Attribute(
+        Directive::AttributeBegin,
+        Directive::Attribute(
             "shape".into(),
             set(vec![floats(T::Float, "radius", &[2.0])]),
         ),
-        Call::AttributeEnd,
-        Call::Material(
+        Directive::AttributeEnd,
+        Directive::Material(
             "conductor".into(),
             set(vec![
                 strings(T::Spectrum, "eta", &["metal-Cu-eta"]),
                 floats(T::Spectrum, "k", &[400.0, 1.0, 700.0, 2.0]),
             ]),
         ),
-        Call::MakeNamedMaterial(
+        Directive::MakeNamedMaterial(
             "m".into(),
             set(vec![
                 strings(T::String, "type", &["diffuse"]),
                 strings(T::Texture, "reflectance", &["t"]),
             ]),
         ),
-        Call::NamedMaterial("m".into()),
-        Call::Texture(
+        Directive::NamedMaterial("m".into()),
+        Directive::Texture(
             "t".into(),
             "spectrum".into(),
             "checkerboard".into(),
@@ -177,7 +177,7 @@ fn scene_directives() {
                 floats(T::Rgb, "tex2", &[0.0, 1.0, 0.0]),
             ]),
         ),
-        Call::LightSource(
+        Directive::LightSource(
             "spot".into(),
             set(vec![
                 floats(T::Blackbody, "I", &[5500.0]),
@@ -185,24 +185,24 @@ fn scene_directives() {
                 floats(T::Point3, "to", &[0.0; 3]),
             ]),
         ),
-        Call::AreaLightSource(
+        Directive::AreaLightSource(
             "diffuse".into(),
             set(vec![
                 floats(T::Rgb, "L", &[7.0; 3]),
                 param(T::Bool, "twosided", ParamValues::Bools(vec![true])),
             ]),
         ),
-        Call::MakeNamedMedium(
+        Directive::MakeNamedMedium(
             "fog".into(),
             set(vec![strings(T::String, "type", &["homogeneous"])]),
         ),
-        Call::MediumInterface("fog".into(), "".into()),
-        Call::MediumInterface("fog".into(), "fog".into()),
-        Call::ObjectBegin("o".into()),
-        Call::Shape("sphere".into(), ParamSet::new()),
-        Call::ObjectEnd,
-        Call::ObjectInstance("o".into()),
-        Call::Shape(
+        Directive::MediumInterface("fog".into(), "".into()),
+        Directive::MediumInterface("fog".into(), "fog".into()),
+        Directive::ObjectBegin("o".into()),
+        Directive::Shape("sphere".into(), ParamSet::new()),
+        Directive::ObjectEnd,
+        Directive::ObjectInstance("o".into()),
+        Directive::Shape(
             "trianglemesh".into(),
             set(vec![
                 floats(T::Point2, "uv", &[0.0, 0.0, 1.0, 0.0, 1.0, 1.0]),
@@ -224,7 +224,7 @@ fn every_call_has_its_keyword_location() {
     let locs: Vec<(u32, u32)> = rec.calls.iter().map(|(_, l)| (l.line, l.column)).collect();
     assert_eq!(locs, [(1, 1), (4, 2), (5, 4)]);
     assert!(rec.calls.iter().all(|(_, l)| &*l.file == "test.pbrt"));
-    let Call::Camera(_, params) = &rec.calls[0].0 else {
+    let Directive::Camera(_, params) = &rec.calls[0].0 else {
         panic!()
     };
     let fov = params.find("fov").unwrap();
@@ -234,7 +234,7 @@ fn every_call_has_its_keyword_location() {
 #[test]
 fn escapes_are_decoded_in_values_and_names() {
     let got = calls("Shape \"a\\\"b\" \"string s\" [ \"tab\\there\" \"back\\\\slash\" ]");
-    let want = vec![Call::Shape(
+    let want = vec![Directive::Shape(
         "a\"b".into(),
         set(vec![strings(
             ParamType::String,
@@ -248,7 +248,7 @@ fn escapes_are_decoded_in_values_and_names() {
 #[test]
 fn world_end_is_ignored_with_a_warning() {
     let rec = record("WorldBegin\nWorldEnd\n");
-    assert_eq!(rec.calls_only(), vec![Call::WorldBegin]);
+    assert_eq!(rec.calls_only(), vec![Directive::WorldBegin]);
     assert_eq!(rec.warnings.len(), 1);
     assert_eq!((rec.warnings[0].0.line, rec.warnings[0].0.column), (2, 1));
 }
@@ -256,7 +256,7 @@ fn world_end_is_ignored_with_a_warning() {
 #[test]
 fn empty_lists_and_integer_signs() {
     let got = calls("Shape \"x\" \"integer i\" [ ] \"integer j\" [ -3 +4 ] \"float f\" []");
-    let want = vec![Call::Shape(
+    let want = vec![Directive::Shape(
         "x".into(),
         set(vec![
             param(ParamType::Integer, "i", ParamValues::Ints(vec![])),
@@ -265,4 +265,39 @@ fn empty_lists_and_integer_signs() {
         ]),
     )];
     assert_eq!(got, want);
+}
+
+#[test]
+fn every_directive_knows_its_keyword() {
+    let text = "Option \"bool b\" true ColorSpace \"srgb\" Identity Translate 1 2 3\n\
+                Scale 1 1 1 Rotate 1 0 0 1 LookAt 0 0 1 0 0 0 0 1 0\n\
+                ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]\n\
+                Transform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]\n\
+                CoordinateSystem \"c\" CoordSysTransform \"c\" ActiveTransform All\n\
+                TransformTimes 0 1 ReverseOrientation Camera \"perspective\"\n\
+                Film \"rgb\" Sampler \"zsobol\" Integrator \"path\" PixelFilter \"box\"\n\
+                Accelerator \"bvh\" MakeNamedMedium \"m\" MediumInterface \"m\"\n\
+                WorldBegin AttributeBegin AttributeEnd TransformBegin TransformEnd\n\
+                Attribute \"shape\" Shape \"sphere\" Material \"diffuse\"\n\
+                MakeNamedMaterial \"n\" NamedMaterial \"n\"\n\
+                Texture \"t\" \"float\" \"constant\" LightSource \"point\"\n\
+                AreaLightSource \"diffuse\" ObjectBegin \"o\" ObjectEnd ObjectInstance \"o\"";
+    let rec = record(text);
+    let keywords: Vec<&str> = rec.calls.iter().map(|(d, _)| d.keyword()).collect();
+    let expected: Vec<&str> = pbrt_format::DIRECTIVES
+        .iter()
+        .copied()
+        .filter(|w| !matches!(*w, "Include" | "Import" | "WorldEnd"))
+        .collect();
+    let mut sorted = keywords.clone();
+    sorted.sort_unstable();
+    let mut expected_sorted = expected.clone();
+    expected_sorted.sort_unstable();
+    assert_eq!(sorted, expected_sorted, "each directive once");
+    // The keyword is the word at the directive's location.
+    for ((d, loc), word) in rec.calls.iter().zip(&keywords) {
+        let line = text.lines().nth(loc.line as usize - 1).unwrap();
+        let at = &line[loc.column as usize - 1..];
+        assert!(at.starts_with(word), "{} at {loc}", d.keyword());
+    }
 }

@@ -1,7 +1,9 @@
 //! Syntax errors have the right kind and file:line:column; a target's error stops
 //! the parse.
 
-use pbrt_format::{Call, CallSink, ErrorKind, Loc, ParseError, Recorder, TargetResult, parse_str};
+use pbrt_format::{
+    Directive, ErrorKind, Loc, ParseError, ParserTarget, Recorder, TargetResult, parse_str,
+};
 
 fn error(text: &str) -> ParseError {
     match parse_str(text, "e.pbrt", &mut Recorder::new()) {
@@ -329,12 +331,12 @@ struct Strict {
     seen: usize,
 }
 
-impl CallSink for Strict {
-    fn call(&mut self, call: Call, loc: &Loc) -> TargetResult {
+impl ParserTarget for Strict {
+    fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult {
         self.seen += 1;
-        match call {
-            Call::MakeNamedMaterial(n, _) => self.defined.push(n),
-            Call::NamedMaterial(n) if !self.defined.contains(&n) => {
+        match directive {
+            Directive::MakeNamedMaterial(n, _) => self.defined.push(n),
+            Directive::NamedMaterial(n) if !self.defined.contains(&n) => {
                 return Err(ParseError::scene(
                     loc,
                     format!("{n}: named material not defined"),

@@ -6,7 +6,7 @@ mod common;
 use std::fs;
 use std::path::Path;
 
-use pbrt_format::{Call, ErrorKind, FileKind, Recorder, parse_file, parse_str};
+use pbrt_format::{Directive, ErrorKind, FileKind, Recorder, parse_file, parse_str};
 
 fn write(dir: &Path, name: &str, text: &str) {
     let path = dir.join(name);
@@ -18,7 +18,7 @@ fn named(rec: &Recorder) -> Vec<(String, String, u32)> {
     rec.calls
         .iter()
         .filter_map(|(c, loc)| match c {
-            Call::NamedMaterial(n) => {
+            Directive::NamedMaterial(n) => {
                 let file = Path::new(&*loc.file).file_name().unwrap();
                 Some((n.clone(), file.to_string_lossy().into_owned(), loc.line))
             }
@@ -72,7 +72,7 @@ fn include_is_textual_and_relative_to_the_including_file() {
     let m1 = rec
         .calls
         .iter()
-        .find(|(c, _)| *c == Call::NamedMaterial("m1".into()))
+        .find(|(c, _)| *c == Directive::NamedMaterial("m1".into()))
         .unwrap();
     assert_eq!(m1.1.column, 3);
 }

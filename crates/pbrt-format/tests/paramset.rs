@@ -4,11 +4,13 @@
 mod common;
 
 use common::record;
-use pbrt_format::{Call, FloatOrTexture, ParamSet, SpectrumOrTexture, SpectrumValue, Warnings};
+use pbrt_format::{
+    Directive, FloatOrTexture, ParamSet, SpectrumOrTexture, SpectrumValue, Warnings,
+};
 
 fn params_of(text: &str) -> ParamSet {
     match record(text).calls.remove(0).0 {
-        Call::Shape(_, p) => p,
+        Directive::Shape(_, p) => p,
         other => panic!("expected a shape, got {other:?}"),
     }
 }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use pbrt_format::{Call, ParamSet, Recorder, parse_file};
+use pbrt_format::{Directive, ParamSet, Recorder, parse_file};
 
 #[derive(Debug, Default, PartialEq, Eq)]
 struct Counts {
@@ -18,34 +18,34 @@ struct Counts {
     values: usize,
 }
 
-fn params_of(c: &Call) -> Option<&ParamSet> {
+fn params_of(c: &Directive) -> Option<&ParamSet> {
     match c {
-        Call::Camera(_, p)
-        | Call::Film(_, p)
-        | Call::Sampler(_, p)
-        | Call::Integrator(_, p)
-        | Call::PixelFilter(_, p)
-        | Call::Accelerator(_, p)
-        | Call::MakeNamedMedium(_, p)
-        | Call::Attribute(_, p)
-        | Call::Shape(_, p)
-        | Call::Material(_, p)
-        | Call::MakeNamedMaterial(_, p)
-        | Call::Texture(_, _, _, p)
-        | Call::LightSource(_, p)
-        | Call::AreaLightSource(_, p) => Some(p),
+        Directive::Camera(_, p)
+        | Directive::Film(_, p)
+        | Directive::Sampler(_, p)
+        | Directive::Integrator(_, p)
+        | Directive::PixelFilter(_, p)
+        | Directive::Accelerator(_, p)
+        | Directive::MakeNamedMedium(_, p)
+        | Directive::Attribute(_, p)
+        | Directive::Shape(_, p)
+        | Directive::Material(_, p)
+        | Directive::MakeNamedMaterial(_, p)
+        | Directive::Texture(_, _, _, p)
+        | Directive::LightSource(_, p)
+        | Directive::AreaLightSource(_, p) => Some(p),
         _ => None,
     }
 }
 
 fn count(rec: &Recorder) -> Counts {
     Counts {
-        shapes: rec.count(|c| matches!(c, Call::Shape(..))),
-        lights: rec.count(|c| matches!(c, Call::LightSource(..))),
-        area_lights: rec.count(|c| matches!(c, Call::AreaLightSource(..))),
-        materials: rec.count(|c| matches!(c, Call::Material(..))),
-        named_materials: rec.count(|c| matches!(c, Call::MakeNamedMaterial(..))),
-        textures: rec.count(|c| matches!(c, Call::Texture(..))),
+        shapes: rec.count(|c| matches!(c, Directive::Shape(..))),
+        lights: rec.count(|c| matches!(c, Directive::LightSource(..))),
+        area_lights: rec.count(|c| matches!(c, Directive::AreaLightSource(..))),
+        materials: rec.count(|c| matches!(c, Directive::Material(..))),
+        named_materials: rec.count(|c| matches!(c, Directive::MakeNamedMaterial(..))),
+        textures: rec.count(|c| matches!(c, Directive::Texture(..))),
         includes: rec.files.iter().filter(|f| f.2).count() - 1,
         calls: rec.calls.len(),
         values: rec
@@ -166,7 +166,7 @@ fn killeroo_subdivision_mesh_is_read_exactly() {
         return;
     };
     let rec = parse(&dir.join("killeroos/geometry/killeroo.pbrt"));
-    let Call::Shape(ty, params) = &rec.calls[0].0 else {
+    let Directive::Shape(ty, params) = &rec.calls[0].0 else {
         panic!("expected a shape, got {:?}", rec.calls[0].0)
     };
     assert_eq!(ty, "loopsubdiv");
@@ -191,7 +191,7 @@ fn included_files_are_reported_and_located() {
     let shapes: Vec<_> = rec
         .calls
         .iter()
-        .filter(|(c, _)| matches!(c, Call::Shape(t, _) if t == "loopsubdiv"))
+        .filter(|(c, _)| matches!(c, Directive::Shape(t, _) if t == "loopsubdiv"))
         .map(|(_, loc)| loc)
         .collect();
     assert_eq!(shapes.len(), 2);

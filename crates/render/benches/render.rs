@@ -20,10 +20,9 @@ use std::path::Path;
 const SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/scenes");
 
 fn options() -> RenderOptions {
-    RenderOptions {
-        spp: 4,
-        ..RenderOptions::default()
-    }
+    let mut opts = RenderOptions::default();
+    opts.sampler.spp = 4;
+    opts
 }
 
 /// Benchmarks one whole render of `scene`, throughput in rays.

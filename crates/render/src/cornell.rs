@@ -33,10 +33,10 @@
 
 use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
+use crate::error::RenderError;
 use crate::filter::Filter;
 use crate::geometry::{MeshData, TriangleMesh};
 use crate::math::{Point3, Transform, Vec3};
-use crate::render::RenderError;
 use crate::scene::{CameraSpec, Emission, FilmSettings, Scene, SceneBuilder};
 use crate::spectrum::Rgb;
 
@@ -205,18 +205,10 @@ pub fn cornell_camera() -> Result<CameraSpec, RenderError> {
 /// radius 0.5 (each sample lands in its own pixel).
 pub fn cornell_box(resolution: [u32; 2]) -> Result<Scene, RenderError> {
     let mut b = SceneBuilder::new();
-    let white = b.add_material(Material::Diffuse {
-        reflectance: Rgb::from_array(CORNELL_WHITE),
-    });
-    let red = b.add_material(Material::Diffuse {
-        reflectance: Rgb::from_array(CORNELL_RED),
-    });
-    let green = b.add_material(Material::Diffuse {
-        reflectance: Rgb::from_array(CORNELL_GREEN),
-    });
-    let black = b.add_material(Material::Diffuse {
-        reflectance: Rgb::ZERO,
-    });
+    let white = b.add_material(Material::diffuse(Rgb::from_array(CORNELL_WHITE)));
+    let red = b.add_material(Material::diffuse(Rgb::from_array(CORNELL_RED)));
+    let green = b.add_material(Material::diffuse(Rgb::from_array(CORNELL_GREEN)));
+    let black = b.add_material(Material::diffuse(Rgb::ZERO));
     let mut whites = vec![FLOOR, BACK_WALL];
     whites.extend(ceiling());
     whites.extend(SHORT_BLOCK);

@@ -34,4 +34,4 @@ pub mod spectrum;
 pub mod texture;
 
 pub use accel::Accel;
-pub use error::Error;
+pub use error::{Error, RenderError};

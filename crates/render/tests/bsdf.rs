@@ -68,57 +68,57 @@ fn glossy_cases() -> Vec<(&'static str, Bxdf)> {
         (
             "diffuse",
             Material::Diffuse {
-                reflectance: Rgb::new(0.2, 0.5, 0.9),
+                reflectance: Rgb::new(0.2, 0.5, 0.9).into(),
             },
         ),
         (
             "difftrans",
             Material::DiffuseTransmission {
-                reflectance: Rgb::new(0.3, 0.1, 0.5),
-                transmittance: Rgb::new(0.6, 0.2, 0.4),
+                reflectance: Rgb::new(0.3, 0.1, 0.5).into(),
+                transmittance: Rgb::new(0.6, 0.2, 0.4).into(),
                 scale: 1.0,
             },
         ),
         (
             "gold a0.3",
             Material::Conductor {
-                spec: ConductorSpec::named("Au").unwrap(),
-                roughness: rough(0.3),
+                spec: ConductorSpec::named("Au").unwrap().into(),
+                roughness: rough(0.3).into(),
             },
         ),
         (
             "alu aniso",
             Material::Conductor {
-                spec: ConductorSpec::named("Al").unwrap(),
-                roughness: aniso,
+                spec: ConductorSpec::named("Al").unwrap().into(),
+                roughness: aniso.into(),
             },
         ),
         (
             "refl a0.8",
             Material::Conductor {
-                spec: ConductorSpec::Reflectance(Rgb::new(0.9, 0.6, 0.3)),
-                roughness: rough(0.8),
+                spec: ConductorSpec::Reflectance(Rgb::new(0.9, 0.6, 0.3)).into(),
+                roughness: rough(0.8).into(),
             },
         ),
         (
             "glass a0.3",
             Material::Dielectric {
                 eta: 1.5,
-                roughness: rough(0.3),
+                roughness: rough(0.3).into(),
             },
         ),
         (
             "water aniso",
             Material::Dielectric {
                 eta: 1.33,
-                roughness: aniso,
+                roughness: aniso.into(),
             },
         ),
         (
             "inv a0.5",
             Material::Dielectric {
                 eta: 1.0 / 1.5,
-                roughness: rough(0.5),
+                roughness: rough(0.5).into(),
             },
         ),
     ];
@@ -128,22 +128,22 @@ fn glossy_cases() -> Vec<(&'static str, Bxdf)> {
 fn layered_cases() -> Vec<(&'static str, Bxdf)> {
     let mut cd = Material::pbrt_default("coateddiffuse").unwrap();
     if let Material::CoatedDiffuse { reflectance, .. } = &mut cd {
-        *reflectance = Rgb::new(0.9, 0.5, 0.1);
+        *reflectance = Rgb::new(0.9, 0.5, 0.1).into();
     }
     let rough_cd = Material::CoatedDiffuse {
-        reflectance: Rgb::splat(1.0),
-        roughness: Roughness::isotropic(0.3, false),
-        thickness: 0.01,
+        reflectance: Rgb::splat(1.0).into(),
+        roughness: Roughness::isotropic(0.3, false).into(),
+        thickness: 0.01.into(),
         eta: 1.5,
         max_depth: 10,
         n_samples: 1,
     };
     let cc = Material::CoatedConductor {
-        interface_roughness: Roughness::isotropic(0.2, false),
+        interface_roughness: Roughness::isotropic(0.2, false).into(),
         interface_eta: 1.5,
-        thickness: 0.01,
-        conductor: ConductorSpec::named("Au").unwrap(),
-        conductor_roughness: Roughness::isotropic(0.3, false),
+        thickness: 0.01.into(),
+        conductor: ConductorSpec::named("Au").unwrap().into(),
+        conductor_roughness: Roughness::isotropic(0.3, false).into(),
         max_depth: 10,
         n_samples: 1,
     };
@@ -307,7 +307,7 @@ fn layered_albedo_at_most_one_and_sampling_unbiased() {
 #[test]
 fn lambertian_albedo_is_exactly_r() {
     let r = Rgb::new(0.2, 0.5, 0.9);
-    let b = Material::Diffuse { reflectance: r }.bxdf(0);
+    let b = Material::diffuse(r).bxdf(0);
     for wo in wos() {
         let a = albedo_sampled(&b, wo, 2_000, 9);
         for c in 0..3 {

@@ -34,7 +34,7 @@ fn wos() -> Vec<Vec3> {
 fn smooth_dielectric_conserves_energy() {
     let b = Material::Dielectric {
         eta: 1.5,
-        roughness: Roughness::SMOOTH,
+        roughness: Roughness::SMOOTH.into(),
     }
     .bxdf(0);
     assert!(b.flags().is_specular() && !b.flags().is_non_specular());
@@ -86,7 +86,7 @@ fn index_matched_interfaces_and_black_conductors() {
     for r in [0.0, 0.4] {
         let b = Material::Dielectric {
             eta: 1.0,
-            roughness: Roughness::isotropic(r, true),
+            roughness: Roughness::isotropic(r, true).into(),
         }
         .bxdf(0);
         let wo = dir(40.0, 10.0);
@@ -101,8 +101,8 @@ fn index_matched_interfaces_and_black_conductors() {
     };
     for r in [0.0, 0.3] {
         let b = Material::Conductor {
-            spec,
-            roughness: Roughness::isotropic(r, true),
+            spec: spec.into(),
+            roughness: Roughness::isotropic(r, true).into(),
         }
         .bxdf(0);
         let wo = dir(30.0, 0.0);
@@ -120,8 +120,8 @@ fn index_matched_interfaces_and_black_conductors() {
     // The artist-friendly reflectance is exact at normal incidence.
     let r = Rgb::new(0.95, 0.64, 0.54);
     let b = Material::Conductor {
-        spec: ConductorSpec::Reflectance(r),
-        roughness: Roughness::SMOOTH,
+        spec: ConductorSpec::Reflectance(r).into(),
+        roughness: Roughness::SMOOTH.into(),
     }
     .bxdf(0);
     let s = b.sample_f(Vec3::Z, 0.5, [0.5, 0.5], RAD, ALL).unwrap();
@@ -212,16 +212,17 @@ fn pinned_values() {
     let wi = dir(45.0, 200.0);
     let wt = dir(150.0, 170.0);
     let gold = Material::Conductor {
-        spec: ConductorSpec::named("Au").unwrap(),
+        spec: ConductorSpec::named("Au").unwrap().into(),
         roughness: Roughness {
             u: 0.1,
             v: 0.3,
             remap: true,
-        },
+        }
+        .into(),
     };
     let glass = Material::Dielectric {
         eta: 1.5,
-        roughness: Roughness::isotropic(0.2, false),
+        roughness: Roughness::isotropic(0.2, false).into(),
     };
     let coated = Material::pbrt_default("coateddiffuse").unwrap();
     let cases = [

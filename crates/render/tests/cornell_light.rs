@@ -106,14 +106,11 @@ fn directly_seen_light_covers_each_pixel_exactly() {
     let (w, h) = (96u32, 64u32);
     let scene = cornell_box([w, h]).unwrap();
     let opts = RenderOptions {
-        sampler: SamplerName::SobolOwen,
-        seed: 3,
-        spp: 1024,
         integrator: PathIntegrator {
             max_depth: 0,
             ..PathIntegrator::default()
         },
-        ..RenderOptions::default()
+        ..RenderOptions::new(SamplerName::SobolOwen, 3, 1024)
     };
     let out = render(&scene, &opts, &NoProgress).unwrap();
     let cov = coverage(w, h, 0.0);

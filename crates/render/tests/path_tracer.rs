@@ -38,17 +38,13 @@ fn film(res: u32) -> FilmSettings {
 /// Mean image value (channel average) of `scene` at `spp` and `max_depth`.
 fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64 {
     let opts = RenderOptions {
-        sampler: SamplerName::ZSobol,
-        seed: 3,
-        spp,
         integrator: PathIntegrator {
             max_depth,
             strategy,
-            bsdf_seed: 0,
         },
         threads: Some(2),
         tile_size: 16,
-        ..RenderOptions::default()
+        ..RenderOptions::new(SamplerName::ZSobol, 3, spp)
     };
     let out = render(scene, &opts, &NoProgress).unwrap();
     assert_eq!(out.stats.nonfinite_samples, 0);
@@ -57,9 +53,7 @@ fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64
 }
 
 fn grey(v: f32) -> Material {
-    Material::Diffuse {
-        reflectance: Rgb::splat(v),
-    }
+    Material::diffuse(Rgb::splat(v))
 }
 
 #[test]

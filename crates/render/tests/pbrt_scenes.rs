@@ -148,10 +148,8 @@ fn cornell_box_renders_finite_at_16x16() {
         return;
     };
     l.scene.set_resolution([16, 16]).unwrap();
-    let opts = RenderOptions {
-        spp: 1,
-        ..RenderOptions::default()
-    };
+    let mut opts = RenderOptions::default();
+    opts.sampler.spp = 1;
     let out = render(&l.scene, &opts, &NoProgress).unwrap();
     let m = out.mean();
     assert!(

@@ -7,26 +7,23 @@ use lowdisc_render::camera::PerspectiveParams;
 use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::filter::Filter;
 use lowdisc_render::geometry::Sphere;
-use lowdisc_render::integrator::PathIntegrator;
+use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
-use lowdisc_render::render::{NoProgress, Progress, RenderOptions, render};
+use lowdisc_render::render::{MAX_SPP, NoProgress, Progress, RenderOptions, render};
 use lowdisc_render::scene::{CameraSpec, Emission, FilmSettings, SceneBuilder};
 use lowdisc_render::spectrum::Rgb;
 use std::sync::Mutex;
 
 fn opts(sampler: SamplerName, spp: u32, threads: usize) -> RenderOptions {
     RenderOptions {
-        sampler,
-        seed: 7,
-        spp,
         integrator: PathIntegrator {
             max_depth: 5,
             ..PathIntegrator::default()
         },
         threads: Some(threads),
         tile_size: 8,
-        ..RenderOptions::default()
+        ..RenderOptions::new(sampler, 7, spp)
     }
 }
 
@@ -50,7 +47,7 @@ fn output_is_bit_identical_with_one_and_two_threads() {
         assert_eq!(a.stats.samples, 40 * 24 * 4);
         // A different seed changes the image (the test can fail).
         let mut o = opts(name, 4, 2);
-        o.seed = 8;
+        o.sampler.seed = 8;
         let c = render(&scene, &o, &NoProgress).unwrap();
         assert_ne!(
             bits(a.image.pixels()),
@@ -68,10 +65,8 @@ fn paper_threshold_reaches_the_sampler() {
     let scene = cornell_box([16, 16]).unwrap();
     let sobol = render(&scene, &opts(SamplerName::Sobol, 4, 2), &NoProgress).unwrap();
     let paper = |t: f64| {
-        let o = RenderOptions {
-            threshold: t,
-            ..opts(SamplerName::PaperRepro, 4, 2)
-        };
+        let mut o = opts(SamplerName::PaperRepro, 4, 2);
+        o.sampler.threshold = t;
         render(&scene, &o, &NoProgress).unwrap()
     };
     assert_eq!(bits(paper(1.0).image.pixels()), bits(sobol.image.pixels()));
@@ -131,7 +126,7 @@ fn cornell_box_has_finite_positive_mean_red_left_green_right() {
 /// A diffuse sphere seen by a camera, lit by a point light.
 fn sphere_scene(reflectance: Rgb, with_light: bool) -> lowdisc_render::scene::Scene {
     let mut b = SceneBuilder::new();
-    let m = b.add_material(Material::Diffuse { reflectance });
+    let m = b.add_material(Material::diffuse(reflectance));
     b.add_sphere(
         Sphere::new(Transform::IDENTITY, 1.0, false).unwrap(),
         m,
@@ -185,9 +180,7 @@ fn nonfinite_samples_are_counted_and_never_written() {
     // one bounce overflows to infinity: those samples must be counted and
     // dropped (the film treats NaN the same way).
     let mut b = SceneBuilder::new();
-    let m = b.add_material(Material::Diffuse {
-        reflectance: Rgb::splat(0.9),
-    });
+    let m = b.add_material(Material::diffuse(Rgb::splat(0.9)));
     let e = Emission {
         l: Rgb::splat(0.8 * f32::MAX),
         two_sided: false,
@@ -234,9 +227,19 @@ fn progress_reports_every_tile_and_bad_options_are_errors() {
     assert_eq!((last.tiles_done, last.tiles_total), (6, 6));
     assert_eq!(last.samples_done, 200);
     assert_eq!(last.rays, out.stats.rays);
+    let with_threshold = |name, t| {
+        let mut o = opts(name, 1, 1);
+        o.sampler.threshold = t;
+        o
+    };
     for bad in [
+        opts(SamplerName::ZSobol, 0, 1),
+        opts(SamplerName::ZSobol, MAX_SPP + 1, 1),
         RenderOptions {
-            spp: 0,
+            integrator: PathIntegrator {
+                max_depth: MAX_DEPTH_LIMIT + 1,
+                ..PathIntegrator::default()
+            },
             ..opts(SamplerName::ZSobol, 1, 1)
         },
         RenderOptions {
@@ -247,15 +250,10 @@ fn progress_reports_every_tile_and_bad_options_are_errors() {
             tile_size: 0,
             ..opts(SamplerName::ZSobol, 1, 1)
         },
-        RenderOptions {
-            threshold: f64::NAN,
-            ..opts(SamplerName::PaperRepro, 1, 1)
-        },
-        RenderOptions {
-            threshold: 1.5,
-            ..opts(SamplerName::Paper, 1, 1)
-        },
+        with_threshold(SamplerName::PaperRepro, f64::NAN),
+        with_threshold(SamplerName::Paper, 1.5),
     ] {
+        assert!(bad.validate().is_err(), "{bad:?}");
         assert!(render(&scene, &bad, &NoProgress).is_err());
     }
 }

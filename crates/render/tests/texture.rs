@@ -57,7 +57,7 @@ fn checkerboard_at_known_uv() {
     let t1 = Rgb::new(0.325, 0.31, 0.25);
     let t2 = Rgb::new(0.725, 0.71, 0.68);
     let tex = SpectrumTexture::Checkerboard {
-        checker: Checker::TwoD(mapping),
+        checker: Arc::new(Checker::TwoD(mapping)),
         tex1: Arc::new(SpectrumTexture::Constant(t1)),
         tex2: Arc::new(SpectrumTexture::Constant(t2)),
     };
@@ -69,7 +69,7 @@ fn checkerboard_at_known_uv() {
     assert_eq!(tex.evaluate(&at(0.999, 0.001)), t2); // 19 + 0
     // 3-D variant: parity of floor(x) + floor(y) + floor(z) in texture space.
     let solid = FloatTexture::Checkerboard {
-        checker: Checker::ThreeD(Transform::scale(Vec3::splat(2.0)).unwrap()),
+        checker: Arc::new(Checker::ThreeD(Transform::scale(Vec3::splat(2.0)).unwrap())),
         tex1: Arc::new(FloatTexture::Constant(1.0)),
         tex2: Arc::new(FloatTexture::Constant(0.0)),
     };

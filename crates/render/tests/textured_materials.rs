@@ -1,16 +1,15 @@
 //! Materials with textured parameters: a checkerboard-textured diffuse plane
 //! under uniform light shows its two albedos, an image texture's texel comes
-//! back through the BSDF at its uv, constant textures give bit-identical
-//! BSDFs, `mix` follows a textured amount, and the pbrt loader builds
+//! back through the BSDF at its uv, constant materials do not depend on the
+//! shading point, `mix` follows a textured amount, and the pbrt loader builds
 //! textured materials (keeping untextured ones constant).
 
 mod common;
 
 use lowdisc::catalog::SamplerName;
 use lowdisc_image::RgbImage;
-use lowdisc_render::bsdf::material::textured::{const_float, const_rgb};
 use lowdisc_render::bsdf::{
-    BsdfContext, ConductorSpec, Material, MixMaterial, Roughness, TexturedMaterial, TransportMode,
+    BsdfContext, ConductorSpec, Material, MixMaterial, Roughness, TransportMode,
 };
 use lowdisc_render::camera::PerspectiveParams;
 use lowdisc_render::filter::Filter;
@@ -32,17 +31,17 @@ const RHO1: Rgb = Rgb::new(0.8, 0.2, 0.5);
 const RHO2: Rgb = Rgb::new(0.1, 0.6, 0.3);
 
 /// A 2x2 checkerboard over uv (`uscale = vscale = 2`).
-fn checker_2x2(tex1: Rgb, tex2: Rgb) -> Arc<SpectrumTexture> {
-    Arc::new(SpectrumTexture::Checkerboard {
-        checker: Checker::TwoD(TextureMapping::Uv {
+fn checker_2x2(tex1: Rgb, tex2: Rgb) -> SpectrumTexture {
+    SpectrumTexture::Checkerboard {
+        checker: Arc::new(Checker::TwoD(TextureMapping::Uv {
             su: 2.0,
             sv: 2.0,
             du: 0.0,
             dv: 0.0,
-        }),
-        tex1: const_rgb(tex1),
-        tex2: const_rgb(tex2),
-    })
+        })),
+        tex1: Arc::new(tex1.into()),
+        tex2: Arc::new(tex2.into()),
+    }
 }
 
 fn ctx_at(uv: Point2) -> BsdfContext {
@@ -72,12 +71,9 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
     // makes four quadrants. Under a uniform environment L = 1 a Lambertian
     // plane (nothing else in the scene) reflects exactly rho * L.
     let mut b = SceneBuilder::new();
-    let m = b.add_material(
-        TexturedMaterial::Diffuse {
-            reflectance: checker_2x2(RHO1, RHO2),
-        }
-        .into_material(),
-    );
+    let m = b.add_material(Material::Diffuse {
+        reflectance: checker_2x2(RHO1, RHO2),
+    });
     let data = MeshData {
         positions: vec![
             Point3::new(-1.0, -1.0, 0.0),
@@ -117,17 +113,13 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
     ));
     let scene = b.build().unwrap();
     let opts = RenderOptions {
-        sampler: SamplerName::ZSobol,
-        seed: 11,
-        spp: 64,
         integrator: PathIntegrator {
             max_depth: 1,
             strategy: LightStrategy::Mis,
-            bsdf_seed: 0,
         },
         threads: Some(2),
         tile_size: 8,
-        ..RenderOptions::default()
+        ..RenderOptions::new(SamplerName::ZSobol, 11, 64)
     };
     let out = render(&scene, &opts, &NoProgress).unwrap();
     let px = |x: usize, y: usize| Rgb::from_array(out.image.get(x, y).unwrap());
@@ -161,9 +153,9 @@ fn image_texture_texel_comes_back_through_the_bsdf() {
     ];
     // Row 0 (the top of the image) is T[0] T[1]; the texture flips t.
     let img = TexImage::new(RgbImage::from_pixels(2, 2, T.to_vec()).unwrap());
-    let tex = Arc::new(SpectrumTexture::Image(ImageTexture::new(Arc::new(img))));
-    let m = TexturedMaterial::Diffuse { reflectance: tex }.into_material();
-    assert!(matches!(m, Material::Textured(_)));
+    let reflectance = SpectrumTexture::Image(Arc::new(ImageTexture::new(Arc::new(img))));
+    let m = Material::Diffuse { reflectance };
+    assert!(!m.is_constant());
     let centres = [(0.25, 0.75), (0.75, 0.75), (0.25, 0.25), (0.75, 0.25)];
     for (texel, (u, v)) in T.iter().zip(centres) {
         let got = diffuse_albedo(&m, Point2::new(u, v));
@@ -181,44 +173,43 @@ fn image_texture_texel_comes_back_through_the_bsdf() {
 fn constant_materials() -> Vec<Material> {
     let gold = ConductorSpec::named("Au").unwrap();
     vec![
-        Material::Diffuse {
-            reflectance: Rgb::new(0.7, 0.4, 0.2),
-        },
+        Material::diffuse(Rgb::new(0.7, 0.4, 0.2)),
         Material::Conductor {
-            spec: gold,
+            spec: gold.into(),
             roughness: Roughness {
                 u: 0.3,
                 v: 0.1,
                 remap: true,
-            },
+            }
+            .into(),
         },
         Material::Conductor {
-            spec: ConductorSpec::Reflectance(Rgb::new(0.9, 0.5, 0.3)),
-            roughness: Roughness::isotropic(0.2, false),
+            spec: ConductorSpec::Reflectance(Rgb::new(0.9, 0.5, 0.3)).into(),
+            roughness: Roughness::isotropic(0.2, false).into(),
         },
         Material::Dielectric {
             eta: 1.33,
-            roughness: Roughness::isotropic(0.25, false),
+            roughness: Roughness::isotropic(0.25, false).into(),
         },
         Material::DiffuseTransmission {
-            reflectance: Rgb::splat(0.3),
-            transmittance: Rgb::new(0.5, 0.2, 0.1),
+            reflectance: Rgb::splat(0.3).into(),
+            transmittance: Rgb::new(0.5, 0.2, 0.1).into(),
             scale: 1.5,
         },
         Material::CoatedDiffuse {
-            reflectance: Rgb::new(0.6, 0.1, 0.1),
-            roughness: Roughness::isotropic(0.1, true),
-            thickness: 0.02,
+            reflectance: Rgb::new(0.6, 0.1, 0.1).into(),
+            roughness: Roughness::isotropic(0.1, true).into(),
+            thickness: 0.02.into(),
             eta: 1.5,
             max_depth: 10,
             n_samples: 1,
         },
         Material::CoatedConductor {
-            interface_roughness: Roughness::isotropic(0.05, true),
+            interface_roughness: Roughness::isotropic(0.05, true).into(),
             interface_eta: 1.4,
-            thickness: 0.01,
-            conductor: gold,
-            conductor_roughness: Roughness::isotropic(0.2, true),
+            thickness: 0.01.into(),
+            conductor: gold.into(),
+            conductor_roughness: Roughness::isotropic(0.2, true).into(),
             max_depth: 10,
             n_samples: 2,
         },
@@ -226,15 +217,10 @@ fn constant_materials() -> Vec<Material> {
 }
 
 #[test]
-fn constant_textures_give_bit_identical_bsdfs() {
+fn constant_materials_do_not_depend_on_the_shading_point() {
     let mut rng = common::Rng::new(21);
     for m in constant_materials() {
-        let t = TexturedMaterial::from_constant(&m).unwrap();
-        assert!(t.is_constant());
-        // The fast path returns the very same constant material...
-        assert_eq!(t.clone().into_material(), m);
-        // ...and forcing texture evaluation changes no bit.
-        let forced = Material::Textured(Arc::new(t));
+        assert!(m.is_constant(), "{m:?}");
         for _ in 0..50 {
             let ctx = BsdfContext {
                 ns: Vec3::new(0.1, 0.2, 0.97).normalize(),
@@ -244,7 +230,12 @@ fn constant_textures_give_bit_identical_bsdfs() {
                 uv: Point2::new(rng.f32(), rng.f32()),
                 wo: Vec3::Z,
             };
-            let (a, b) = (m.bsdf(&ctx), forced.bsdf(&ctx));
+            let origin = BsdfContext {
+                p: Point3::ZERO,
+                uv: Point2::default(),
+                ..ctx
+            };
+            let (a, b) = (m.bsdf(&ctx), m.bsdf(&origin));
             let wo = rng.vec(-1.0, 1.0).normalize();
             let wi = rng.vec(-1.0, 1.0).normalize();
             let mode = TransportMode::Radiance;
@@ -259,22 +250,19 @@ fn constant_textures_give_bit_identical_bsdfs() {
 #[test]
 fn textured_roughness_and_thickness_follow_the_texture() {
     // Roughness 0 (specular) in one checker square, 0.5 in the other.
-    let rough = Arc::new(FloatTexture::Checkerboard {
-        checker: Checker::TwoD(TextureMapping::default()),
-        tex1: const_float(0.0),
-        tex2: const_float(0.5),
-    });
-    let m = TexturedMaterial::Conductor {
-        spec: lowdisc_render::bsdf::TexturedConductor::constant(
-            ConductorSpec::named("Ag").unwrap(),
-        ),
-        roughness: lowdisc_render::bsdf::TexturedRoughness {
+    let rough = FloatTexture::Checkerboard {
+        checker: Arc::new(Checker::TwoD(TextureMapping::default())),
+        tex1: Arc::new(0.0.into()),
+        tex2: Arc::new(0.5.into()),
+    };
+    let m = Material::Conductor {
+        spec: ConductorSpec::named("Ag").unwrap().into(),
+        roughness: Roughness {
             u: rough.clone(),
             v: rough,
             remap: false,
         },
-    }
-    .into_material();
+    };
     assert!(!m.is_specular_only(), "the roughness varies");
     let flags = |u: f32| m.bsdf(&ctx_at(Point2::new(u, 0.5))).flags();
     // floor(0.5) + floor(0.5) = 0: tex1 (smooth); floor(1.5) = 1: tex2.
@@ -284,14 +272,14 @@ fn textured_roughness_and_thickness_follow_the_texture() {
 
 #[test]
 fn mix_follows_a_textured_amount() {
-    let a = Material::Diffuse { reflectance: RHO1 };
-    let b = Material::Diffuse { reflectance: RHO2 };
+    let a = Material::diffuse(RHO1);
+    let b = Material::diffuse(RHO2);
     // amount 0 where the checker shows tex1, 0.25 where it shows tex2.
-    let amount = Arc::new(FloatTexture::Checkerboard {
-        checker: Checker::TwoD(TextureMapping::default()),
-        tex1: const_float(0.0),
-        tex2: const_float(0.25),
-    });
+    let amount = FloatTexture::Checkerboard {
+        checker: Arc::new(Checker::TwoD(TextureMapping::default())),
+        tex1: Arc::new(0.0.into()),
+        tex2: Arc::new(0.25.into()),
+    };
     let mix = Material::Mix(Arc::new(MixMaterial {
         materials: [a, b],
         amount,
@@ -350,22 +338,20 @@ fn loader_builds_textured_and_constant_materials() {
         l.warnings
     );
     let mats = l.scene.materials();
-    let Material::Textured(t) = &mats[0] else {
-        panic!("{:?}", mats[0]);
-    };
     let uv = |u, v| lowdisc_render::texture::TextureEvalContext {
         p: Point3::ZERO,
         uv: Point2::new(u, v),
     };
-    let refl = |m: Material| match m {
-        Material::Diffuse { reflectance } => reflectance,
+    let refl = |m: &Material| match m {
+        Material::Diffuse { reflectance } => reflectance.clone(),
         other => panic!("{other:?}"),
     };
-    assert_eq!(refl(t.evaluate(&uv(0.25, 0.25))), RHO1);
-    assert_eq!(refl(t.evaluate(&uv(0.75, 0.25))), RHO2);
-    // A scale of constants folds to a constant: the plain fast path.
-    assert_eq!(refl(mats[1].clone()), Rgb::splat(0.2));
-    assert!(matches!(mats[2], Material::Textured(_)));
+    assert!(!mats[0].is_constant());
+    assert_eq!(refl(&mats[0]).evaluate(&uv(0.25, 0.25)), RHO1);
+    assert_eq!(refl(&mats[0]).evaluate(&uv(0.75, 0.25)), RHO2);
+    // A scale of constants folds to a constant: the fast path.
+    assert_eq!(refl(&mats[1]).as_constant(), Some(Rgb::splat(0.2)));
+    assert!(!mats[2].is_constant());
     // a, b, then the mix (not counted as a material of its own).
     assert!(matches!(&mats[5], Material::Mix(m) if m.amount.as_constant() == Some(0.3)));
     assert_eq!(l.counts.materials, 5);
@@ -380,10 +366,7 @@ fn shared_scenes_with_textures_get_textured_materials() {
     }
     let l = load_pbrt_scene(&path, &LoadOptions::default()).unwrap();
     assert!(
-        l.scene
-            .materials()
-            .iter()
-            .any(|m| matches!(m, Material::Textured(_))),
+        l.scene.materials().iter().any(|m| !m.is_constant()),
         "the floor's reflectance is an image texture"
     );
     assert!(!l.warnings.iter().any(|w| w.contains("average")));

@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use anyhow::{Context, Result};
-use lowdisc::catalog::SamplerName;
+use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_image::{ErrorStats, ImageFormat, ReadOptions, RgbImage, decode_image, error_metrics};
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
@@ -84,17 +84,18 @@ pub fn options(
     spp: u32,
 ) -> RenderOptions {
     RenderOptions {
-        sampler,
-        seed,
-        spp,
+        sampler: SamplerConfig {
+            seed,
+            spp,
+            threshold: config.threshold,
+            ..SamplerConfig::new(sampler)
+        },
         integrator: PathIntegrator {
             max_depth: config.max_depth,
             ..PathIntegrator::default()
         },
         threads: config.threads,
         tile_size: 16,
-        threshold: config.threshold,
-        paper_all_dims: false,
     }
 }
 

@@ -123,34 +123,33 @@ fn sphere(b: &mut SceneBuilder, center: [f32; 3], r: f32, material: u32) -> Resu
 /// equal-area image; `None` uses [`procedural_sky`]).
 pub fn showroom(resolution: [u32; 2], sky: Option<&RgbImage>) -> Result<Scene> {
     let mut b = SceneBuilder::new();
-    let ground = b.add_material(Material::Diffuse {
-        reflectance: Rgb::splat(0.4),
-    });
+    let ground = b.add_material(Material::diffuse(Rgb::splat(0.4)));
     let gold = b.add_material(Material::Conductor {
-        spec: ConductorSpec::named("Au")?,
-        roughness: Roughness::isotropic(0.1, true),
+        spec: ConductorSpec::named("Au")?.into(),
+        roughness: Roughness::isotropic(0.1, true).into(),
     });
     let alu = b.add_material(Material::Conductor {
-        spec: ConductorSpec::named("Al")?,
-        roughness: Roughness::isotropic(0.3, true),
+        spec: ConductorSpec::named("Al")?.into(),
+        roughness: Roughness::isotropic(0.3, true).into(),
     });
     let paint = b.add_material(Material::CoatedDiffuse {
-        reflectance: Rgb::new(0.6, 0.05, 0.04),
-        roughness: Roughness::SMOOTH,
-        thickness: 0.01,
+        reflectance: Rgb::new(0.6, 0.05, 0.04).into(),
+        roughness: Roughness::SMOOTH.into(),
+        thickness: 0.01.into(),
         eta: 1.5,
         max_depth: 10,
         n_samples: 1,
     });
     let metallic = b.add_material(Material::CoatedConductor {
-        interface_roughness: Roughness::SMOOTH,
+        interface_roughness: Roughness::SMOOTH.into(),
         interface_eta: 1.5,
-        thickness: 0.01,
+        thickness: 0.01.into(),
         conductor: ConductorSpec::EtaK {
             eta: Rgb::new(1.2, 1.0, 0.5),
             k: Rgb::new(3.0, 3.5, 5.0),
-        },
-        conductor_roughness: Roughness::isotropic(0.2, true),
+        }
+        .into(),
+        conductor_roughness: Roughness::isotropic(0.2, true).into(),
         max_depth: 10,
         n_samples: 1,
     });

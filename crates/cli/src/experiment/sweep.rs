@@ -44,7 +44,7 @@ pub fn threshold_sweep(
         let mut srgb8 = Vec::new();
         for seed in 0..u64::from(config.runs) {
             let mut o = options(config, SamplerName::PaperRepro, seed, config.spp);
-            o.threshold = t;
+            o.sampler.threshold = t;
             let image = render(scene, &o, &NoProgress)?.image;
             let m = error_metrics(&image, reference)?;
             linear.push(m.linear.relmse);

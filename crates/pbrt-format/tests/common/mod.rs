@@ -5,7 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use pbrt_format::{Call, Recorder, parse_str};
+use pbrt_format::{Directive, Recorder, parse_str};
 
 /// The shared scene directory, or `None` (with a message) when it is absent.
 pub fn scenes_dir() -> Option<PathBuf> {
@@ -73,6 +73,6 @@ pub fn record(text: &str) -> Recorder {
 }
 
 /// Parses `text` and returns the calls without locations.
-pub fn calls(text: &str) -> Vec<Call> {
+pub fn calls(text: &str) -> Vec<Directive> {
     record(text).calls_only()
 }

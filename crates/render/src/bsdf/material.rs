@@ -2,28 +2,34 @@
 //! shading point; plus the stochastic choice of a `mix` material and a
 //! documented fallback for `measured`.
 //!
-//! Most variants of [`Material`] hold constant parameters (the cheap common
-//! case). [`Material::Textured`] holds a [`TexturedMaterial`] whose textures
-//! are evaluated at the hit's `uv` and position ([`BsdfContext`]) by
-//! [`Material::bsdf`], and [`Material::Mix`] picks one of two materials per
-//! point (see [`textured`]).
+//! Every parameter pbrt-v4 lets be a texture is a [`Texture`](crate::texture::Texture)
+//! here: diffuse `reflectance`; conductor `roughness`/`uroughness`/`vroughness`
+//! and `eta`/`k`/`reflectance`; dielectric roughness; diffusetransmission
+//! `reflectance`/`transmittance`; coateddiffuse `reflectance`, roughness and
+//! `thickness`; coatedconductor interface and conductor roughness, conductor
+//! `eta`/`k`/`reflectance` and `thickness`. Indices of refraction, `scale`,
+//! `maxdepth` and `nsamples` stay constants, as in pbrt-v4. An untextured
+//! parameter is a constant texture, stored inline, so constant materials cost
+//! one branch per parameter. [`Material::bsdf`] evaluates the textures at the
+//! hit's `uv` and position ([`BsdfContext`]); [`Material::Mix`] picks one of two
+//! materials per point. Textures are point-evaluated (no ray differentials; see
+//! [`crate::texture`]). Adding a material means adding a variant here and its
+//! arm in [`Material::bxdf_at`].
 
 mod mix;
-pub mod textured;
+mod params;
 
 use super::conductor::ConductorBxdf;
 use super::dielectric::{DielectricBxdf, ThinDielectricBxdf};
 use super::diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 use super::layered::LayeredBxdf;
-use super::metals::named_spectrum_rgb;
-use super::microfacet::{TrowbridgeReitz, roughness_to_alpha};
 use super::{Bsdf, Bxdf, BxdfModel};
 use crate::math::{Point2, Point3, Vec3};
 use crate::spectrum::Rgb;
-use crate::texture::TextureEvalContext;
+use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
 pub use mix::{MixMaterial, mix_choice};
+pub use params::{ConductorSpec, Roughness};
 use std::sync::Arc;
-pub use textured::{TexturedConductor, TexturedMaterial, TexturedRoughness};
 
 /// Errors building a material from pbrt-v4 names.
 #[derive(Debug, Clone, PartialEq)]
@@ -45,98 +51,28 @@ impl std::fmt::Display for MaterialError {
 
 impl std::error::Error for MaterialError {}
 
-/// Microfacet roughness parameters as pbrt-v4 takes them.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Roughness {
-    /// Roughness along the tangent (`uroughness`, default `roughness`).
-    pub u: f32,
-    /// Roughness along the bitangent (`vroughness`, default `roughness`).
-    pub v: f32,
-    /// `remaproughness`: alpha = sqrt(roughness) when true (pbrt-v4's default).
-    pub remap: bool,
-}
-
-impl Roughness {
-    /// A perfectly smooth surface.
-    pub const SMOOTH: Roughness = Roughness {
-        u: 0.0,
-        v: 0.0,
-        remap: true,
-    };
-    /// Isotropic roughness.
-    pub fn isotropic(r: f32, remap: bool) -> Roughness {
-        Roughness { u: r, v: r, remap }
-    }
-    /// The GGX distribution these parameters describe.
-    pub fn distribution(&self) -> TrowbridgeReitz {
-        let a = |r: f32| if self.remap { roughness_to_alpha(r) } else { r };
-        TrowbridgeReitz::new(a(self.u), a(self.v))
-    }
-}
-
-/// A conductor's optical constants: explicit `eta`/`k`, or pbrt-v4's
-/// artist-friendly `reflectance` (then `eta = 1`, `k = 2 sqrt(r) / sqrt(1 - r)`
-/// with `r` clamped to `[0, 0.9999]`, which gives exactly `r` at normal
-/// incidence).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ConductorSpec {
-    /// Complex index of refraction per channel.
-    EtaK {
-        /// Real part.
-        eta: Rgb,
-        /// Imaginary part (absorption).
-        k: Rgb,
-    },
-    /// Normal-incidence reflectance.
-    Reflectance(Rgb),
-}
-
-impl ConductorSpec {
-    /// A named pbrt-v4 metal: `"Cu"` reads `metal-Cu-eta` and `metal-Cu-k`.
-    pub fn named(metal: &str) -> Result<ConductorSpec, MaterialError> {
-        let get = |which: &str| {
-            let name = format!("metal-{metal}-{which}");
-            named_spectrum_rgb(&name).ok_or(MaterialError::UnknownSpectrum(name))
-        };
-        Ok(ConductorSpec::EtaK {
-            eta: get("eta")?,
-            k: get("k")?,
-        })
-    }
-    /// `(eta, k)` per channel.
-    pub fn eta_k(&self) -> (Rgb, Rgb) {
-        match *self {
-            ConductorSpec::EtaK { eta, k } => (eta, k),
-            ConductorSpec::Reflectance(r) => {
-                let r = r.clamp(0.0, 0.9999);
-                let k = r.map(|x| 2.0 * x.sqrt() / (1.0 - x).max(0.0).sqrt());
-                (Rgb::ONE, k)
-            }
-        }
-    }
-}
-
-/// A material: constant parameters, or textured ones, or a mix.
+/// A material whose parameters are textures (constant ones for untextured
+/// parameters), or a mix of two materials.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Material {
     /// pbrt `diffuse`: `reflectance` (default 0.5).
     Diffuse {
         /// Lambertian reflectance.
-        reflectance: Rgb,
+        reflectance: SpectrumTexture,
     },
     /// pbrt `conductor` (defaults: copper, smooth).
     Conductor {
         /// Optical constants.
-        spec: ConductorSpec,
+        spec: ConductorSpec<SpectrumTexture>,
         /// Roughness.
-        roughness: Roughness,
+        roughness: Roughness<FloatTexture>,
     },
     /// pbrt `dielectric` (default eta 1.5, smooth).
     Dielectric {
         /// Relative index of refraction.
         eta: f32,
         /// Roughness.
-        roughness: Roughness,
+        roughness: Roughness<FloatTexture>,
     },
     /// pbrt `thindielectric` (default eta 1.5).
     ThinDielectric {
@@ -146,20 +82,20 @@ pub enum Material {
     /// pbrt `diffusetransmission` (defaults 0.25, 0.25, scale 1).
     DiffuseTransmission {
         /// Reflectance.
-        reflectance: Rgb,
+        reflectance: SpectrumTexture,
         /// Transmittance.
-        transmittance: Rgb,
+        transmittance: SpectrumTexture,
         /// Multiplies both.
         scale: f32,
     },
     /// pbrt `coateddiffuse`.
     CoatedDiffuse {
         /// Base reflectance (default 0.5).
-        reflectance: Rgb,
+        reflectance: SpectrumTexture,
         /// Coating roughness (default smooth).
-        roughness: Roughness,
+        roughness: Roughness<FloatTexture>,
         /// Layer thickness (default 0.01).
-        thickness: f32,
+        thickness: FloatTexture,
         /// Coating index (default 1.5).
         eta: f32,
         /// Random-walk depth (default 10).
@@ -170,24 +106,20 @@ pub enum Material {
     /// pbrt `coatedconductor`.
     CoatedConductor {
         /// `interface.roughness` (default smooth).
-        interface_roughness: Roughness,
+        interface_roughness: Roughness<FloatTexture>,
         /// `interface.eta` (default 1.5).
         interface_eta: f32,
         /// Layer thickness (default 0.01).
-        thickness: f32,
+        thickness: FloatTexture,
         /// `conductor.eta`/`conductor.k` or `reflectance` (default copper).
-        conductor: ConductorSpec,
+        conductor: ConductorSpec<SpectrumTexture>,
         /// `conductor.roughness` (default smooth).
-        conductor_roughness: Roughness,
+        conductor_roughness: Roughness<FloatTexture>,
         /// Random-walk depth (default 10).
         max_depth: u32,
         /// Walks per estimate (default 1).
         n_samples: u32,
     },
-    /// A material with textured parameters, evaluated at each shading point
-    /// (build it with [`TexturedMaterial::into_material`], which keeps
-    /// constant materials in the variants above).
-    Textured(Arc<TexturedMaterial>),
     /// pbrt `mix`: one of two materials per shading point.
     Mix(Arc<MixMaterial>),
 }
@@ -210,6 +142,19 @@ pub struct BsdfContext {
 }
 
 impl BsdfContext {
+    /// The context [`Material::bxdf`] uses: normal `+z`, tangent `+x`, the
+    /// origin with `uv = (0, 0)`, seen from `+z`.
+    pub fn at_origin(seed: u64) -> BsdfContext {
+        BsdfContext {
+            ns: Vec3::Z,
+            dpdus: Vec3::X,
+            seed,
+            p: Point3::ZERO,
+            uv: Point2::default(),
+            wo: Vec3::Z,
+        }
+    }
+
     /// Where the material's textures are evaluated.
     #[inline]
     pub fn texture_context(&self) -> TextureEvalContext {
@@ -221,41 +166,47 @@ impl BsdfContext {
 }
 
 impl Material {
+    /// A Lambertian material of constant reflectance.
+    pub fn diffuse(reflectance: Rgb) -> Material {
+        Material::Diffuse {
+            reflectance: reflectance.into(),
+        }
+    }
+
     /// The material pbrt-v4 builds for `type_name` when no parameter is given.
     pub fn pbrt_default(type_name: &str) -> Result<Material, MaterialError> {
         let copper = ConductorSpec::named("Cu")?;
+        let smooth = || Roughness::SMOOTH.into();
         Ok(match type_name {
-            "diffuse" => Material::Diffuse {
-                reflectance: Rgb::splat(0.5),
-            },
+            "diffuse" => Material::diffuse(Rgb::splat(0.5)),
             "conductor" => Material::Conductor {
-                spec: copper,
-                roughness: Roughness::SMOOTH,
+                spec: copper.into(),
+                roughness: smooth(),
             },
             "dielectric" => Material::Dielectric {
                 eta: 1.5,
-                roughness: Roughness::SMOOTH,
+                roughness: smooth(),
             },
             "thindielectric" => Material::ThinDielectric { eta: 1.5 },
             "diffusetransmission" => Material::DiffuseTransmission {
-                reflectance: Rgb::splat(0.25),
-                transmittance: Rgb::splat(0.25),
+                reflectance: Rgb::splat(0.25).into(),
+                transmittance: Rgb::splat(0.25).into(),
                 scale: 1.0,
             },
             "coateddiffuse" => Material::CoatedDiffuse {
-                reflectance: Rgb::splat(0.5),
-                roughness: Roughness::SMOOTH,
-                thickness: 0.01,
+                reflectance: Rgb::splat(0.5).into(),
+                roughness: smooth(),
+                thickness: 0.01.into(),
                 eta: 1.5,
                 max_depth: 10,
                 n_samples: 1,
             },
             "coatedconductor" => Material::CoatedConductor {
-                interface_roughness: Roughness::SMOOTH,
+                interface_roughness: smooth(),
                 interface_eta: 1.5,
-                thickness: 0.01,
-                conductor: copper,
-                conductor_roughness: Roughness::SMOOTH,
+                thickness: 0.01.into(),
+                conductor: copper.into(),
+                conductor_roughness: smooth(),
                 max_depth: 10,
                 n_samples: 1,
             },
@@ -274,8 +225,8 @@ impl Material {
             && let Ok(spec) = ConductorSpec::named("Al")
         {
             return Material::Conductor {
-                spec,
-                roughness: Roughness::isotropic(0.2, false),
+                spec: spec.into(),
+                roughness: Roughness::isotropic(0.2, false).into(),
             };
         }
         let reflectance = if name.contains("white") {
@@ -287,45 +238,52 @@ impl Material {
         } else {
             Rgb::splat(0.5)
         };
-        Material::Diffuse { reflectance }
+        Material::diffuse(reflectance)
     }
 
-    /// The local-frame BxDF (`seed` drives the layered random walks). A
-    /// textured material is evaluated at `uv = (0, 0)`, `p = 0`, and a mix
-    /// takes the choice made there for `wo = +z`; shading uses
-    /// [`Material::bsdf`], which evaluates at the hit.
+    /// The local-frame BxDF at [`BsdfContext::at_origin`] (`seed` drives the
+    /// layered random walks): textures are evaluated at `uv = (0, 0)`,
+    /// `p = 0`, and a mix takes the choice made there for `wo = +z`; shading
+    /// uses [`Material::bsdf`], which evaluates at the hit.
     pub fn bxdf(&self, seed: u64) -> Bxdf {
+        self.bxdf_at(&BsdfContext::at_origin(seed))
+    }
+
+    /// The world-space BSDF at a shading point, with textures evaluated at
+    /// `ctx.uv` / `ctx.p`.
+    pub fn bsdf(&self, ctx: &BsdfContext) -> Bsdf {
+        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_at(ctx))
+    }
+
+    /// The local-frame BxDF at a shading point (textures evaluated there).
+    pub fn bxdf_at(&self, ctx: &BsdfContext) -> Bxdf {
         let fix_eta = |e: f32| if e > 0.0 && e.is_finite() { e } else { 1.0 };
-        match *self {
-            Material::Textured(ref t) => t.evaluate(&TextureEvalContext::default()).bxdf(seed),
-            Material::Mix(ref m) => m
-                .choose(&BsdfContext {
-                    ns: Vec3::Z,
-                    dpdus: Vec3::X,
-                    seed,
-                    p: Point3::ZERO,
-                    uv: Point2::default(),
-                    wo: Vec3::Z,
-                })
-                .bxdf(seed),
-            Material::Diffuse { reflectance } => Bxdf::Diffuse(DiffuseBxdf::new(reflectance)),
+        let tc = ctx.texture_context();
+        let seed = ctx.seed;
+        match self {
+            Material::Mix(m) => m.choose(ctx).bxdf_at(ctx),
+            Material::Diffuse { reflectance } => {
+                Bxdf::Diffuse(DiffuseBxdf::new(reflectance.evaluate(&tc)))
+            }
             Material::Conductor { spec, roughness } => {
-                let (eta, k) = spec.eta_k();
-                Bxdf::Conductor(ConductorBxdf::new(roughness.distribution(), eta, k))
+                let (eta, k) = spec.evaluate(&tc).eta_k();
+                let distribution = roughness.evaluate(&tc).distribution();
+                Bxdf::Conductor(ConductorBxdf::new(distribution, eta, k))
             }
-            Material::Dielectric { eta, roughness } => {
-                Bxdf::Dielectric(DielectricBxdf::new(fix_eta(eta), roughness.distribution()))
-            }
+            Material::Dielectric { eta, roughness } => Bxdf::Dielectric(DielectricBxdf::new(
+                fix_eta(*eta),
+                roughness.evaluate(&tc).distribution(),
+            )),
             Material::ThinDielectric { eta } => {
-                Bxdf::ThinDielectric(ThinDielectricBxdf::new(fix_eta(eta)))
+                Bxdf::ThinDielectric(ThinDielectricBxdf::new(fix_eta(*eta)))
             }
             Material::DiffuseTransmission {
                 reflectance,
                 transmittance,
                 scale,
             } => Bxdf::DiffuseTransmission(DiffuseTransmissionBxdf::new(
-                reflectance * scale,
-                transmittance * scale,
+                reflectance.evaluate(&tc) * *scale,
+                transmittance.evaluate(&tc) * *scale,
             )),
             Material::CoatedDiffuse {
                 reflectance,
@@ -335,11 +293,11 @@ impl Material {
                 max_depth,
                 n_samples,
             } => Bxdf::CoatedDiffuse(LayeredBxdf::new(
-                DielectricBxdf::new(fix_eta(eta), roughness.distribution()),
-                DiffuseBxdf::new(reflectance),
-                thickness,
-                max_depth,
-                n_samples,
+                DielectricBxdf::new(fix_eta(*eta), roughness.evaluate(&tc).distribution()),
+                DiffuseBxdf::new(reflectance.evaluate(&tc)),
+                thickness.evaluate(&tc),
+                *max_depth,
+                *n_samples,
                 seed,
             )),
             Material::CoatedConductor {
@@ -351,36 +309,75 @@ impl Material {
                 max_depth,
                 n_samples,
             } => {
-                let ieta = fix_eta(interface_eta);
+                let ieta = fix_eta(*interface_eta);
                 // As pbrt-v4: the conductor sits under the coating, so its
                 // index is relative to the coating's.
-                let (eta, k) = conductor.eta_k();
-                let base =
-                    ConductorBxdf::new(conductor_roughness.distribution(), eta / ieta, k / ieta);
+                let (eta, k) = conductor.evaluate(&tc).eta_k();
+                let distribution = conductor_roughness.evaluate(&tc).distribution();
+                let base = ConductorBxdf::new(distribution, eta / ieta, k / ieta);
                 Bxdf::CoatedConductor(LayeredBxdf::new(
-                    DielectricBxdf::new(ieta, interface_roughness.distribution()),
+                    DielectricBxdf::new(ieta, interface_roughness.evaluate(&tc).distribution()),
                     base,
-                    thickness,
-                    max_depth,
-                    n_samples,
+                    thickness.evaluate(&tc),
+                    *max_depth,
+                    *n_samples,
                     seed,
                 ))
             }
         }
     }
 
-    /// The world-space BSDF at a shading point, with textures evaluated at
-    /// `ctx.uv` / `ctx.p` (constant materials skip that step).
-    pub fn bsdf(&self, ctx: &BsdfContext) -> Bsdf {
-        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_at(ctx))
+    /// True when no texture of the material varies (for a mix: neither side's
+    /// nor the amount's).
+    pub fn is_constant(&self) -> bool {
+        let rgb = |t: &SpectrumTexture| t.as_constant().is_some();
+        let float = |t: &FloatTexture| t.as_constant().is_some();
+        let spec = |s: &ConductorSpec<SpectrumTexture>| match s {
+            ConductorSpec::EtaK { eta, k } => rgb(eta) && rgb(k),
+            ConductorSpec::Reflectance(r) => rgb(r),
+        };
+        self.roughness_is_constant()
+            && match self {
+                Material::Diffuse { reflectance } => rgb(reflectance),
+                Material::Conductor { spec: s, .. } => spec(s),
+                Material::Dielectric { .. } | Material::ThinDielectric { .. } => true,
+                Material::DiffuseTransmission {
+                    reflectance,
+                    transmittance,
+                    ..
+                } => rgb(reflectance) && rgb(transmittance),
+                Material::CoatedDiffuse {
+                    reflectance,
+                    thickness,
+                    ..
+                } => rgb(reflectance) && float(thickness),
+                Material::CoatedConductor {
+                    thickness,
+                    conductor,
+                    ..
+                } => float(thickness) && spec(conductor),
+                Material::Mix(m) => {
+                    float(&m.amount) && m.materials.iter().all(Material::is_constant)
+                }
+            }
     }
 
-    /// The local-frame BxDF at a shading point (textures evaluated there).
-    pub fn bxdf_at(&self, ctx: &BsdfContext) -> Bxdf {
+    /// True when no roughness texture varies (so whether the material is
+    /// specular does not vary over the surface).
+    fn roughness_is_constant(&self) -> bool {
         match self {
-            Material::Textured(t) => t.evaluate(&ctx.texture_context()).bxdf(ctx.seed),
-            Material::Mix(m) => m.choose(ctx).bxdf_at(ctx),
-            _ => self.bxdf(ctx.seed),
+            Material::Diffuse { .. }
+            | Material::DiffuseTransmission { .. }
+            | Material::ThinDielectric { .. } => true,
+            Material::Conductor { roughness, .. }
+            | Material::Dielectric { roughness, .. }
+            | Material::CoatedDiffuse { roughness, .. } => roughness.is_constant(),
+            Material::CoatedConductor {
+                interface_roughness,
+                conductor_roughness,
+                ..
+            } => interface_roughness.is_constant() && conductor_roughness.is_constant(),
+            Material::Mix(m) => m.materials.iter().all(Material::roughness_is_constant),
         }
     }
 
@@ -389,11 +386,12 @@ impl Material {
     /// of which one side is not specular.
     pub fn is_specular_only(&self) -> bool {
         match self {
-            Material::Textured(t) => t.is_specular_only(),
             Material::Mix(m) => m.materials.iter().all(Material::is_specular_only),
             _ => {
-                let f = self.bxdf(0).flags();
-                f.is_specular() && !f.is_non_specular()
+                self.roughness_is_constant() && {
+                    let f = self.bxdf(0).flags();
+                    f.is_specular() && !f.is_non_specular()
+                }
             }
         }
     }

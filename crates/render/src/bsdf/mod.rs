@@ -30,8 +30,7 @@ pub use dielectric::{DielectricBxdf, ThinDielectricBxdf};
 pub use diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf};
 pub use material::{
-    BsdfContext, ConductorSpec, Material, MaterialError, MixMaterial, Roughness, TexturedConductor,
-    TexturedMaterial, TexturedRoughness, mix_choice,
+    BsdfContext, ConductorSpec, Material, MaterialError, MixMaterial, Roughness, mix_choice,
 };
 pub use microfacet::TrowbridgeReitz;
 pub use world::Bsdf;

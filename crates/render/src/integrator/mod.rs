@@ -69,8 +69,6 @@ pub struct PathIntegrator {
     pub max_depth: u32,
     /// Direct-lighting strategy.
     pub strategy: LightStrategy,
-    /// Seed for the stochastic (layered) BSDFs' internal random walks.
-    pub bsdf_seed: u64,
 }
 
 impl Default for PathIntegrator {
@@ -78,7 +76,6 @@ impl Default for PathIntegrator {
         PathIntegrator {
             max_depth: 5,
             strategy: LightStrategy::Mis,
-            bsdf_seed: 0,
         }
     }
 }

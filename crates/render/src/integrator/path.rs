@@ -40,11 +40,14 @@ impl PathIntegrator {
     /// Radiance arriving at the camera along `ray` (unit direction), drawing
     /// every random number from `sampler` (whose pixel sample has been
     /// started and whose pixel and lens dimensions have been consumed).
+    /// `bsdf_seed` seeds the stochastic (layered) BSDFs' random walks (the
+    /// render passes its sampler seed).
     pub fn li<S: PixelSampler>(
         &self,
         scene: &Scene,
         mut ray: Ray,
         sampler: &mut S,
+        bsdf_seed: u64,
         stats: &mut PathStats,
     ) -> Rgb {
         let mut l = Rgb::ZERO;
@@ -96,7 +99,7 @@ impl PathIntegrator {
             let bsdf = material.bsdf(&BsdfContext {
                 ns: surf.ns,
                 dpdus: surf.dpdu,
-                seed: self.bsdf_seed,
+                seed: bsdf_seed,
                 p: surf.p,
                 uv: surf.uv,
                 wo,

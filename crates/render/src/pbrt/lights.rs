@@ -1,7 +1,7 @@
 //! `LightSource` (point, spot, distant, infinite) and `AreaLightSource
 //! "diffuse"`; the CTM is the light-to-world transform.
 
-use super::sink::PbrtLoader;
+use super::loader::PbrtLoader;
 use super::state::AreaSpec;
 use crate::light::{
     DistantLight, EnvLookup, ImageInfiniteLight, Light, PointLight, SpotLight, UniformInfiniteLight,

@@ -1,18 +1,16 @@
 //! `Material` and `MakeNamedMaterial`: pbrt-v4 materials as this crate's
 //! [`Material`]s, spectra reduced to RGB. Parameters pbrt-v4 allows to be
-//! textures become [`TexturedMaterial`] parameters (materials whose
-//! parameters are all constant stay plain constant [`Material`]s); `mix`
+//! textures become texture parameters (constant textures for values); `mix`
 //! becomes a [`MixMaterial`]. The `Texture` directive is in [`textures`].
 
 mod textures;
 
-use super::sink::PbrtLoader;
+use super::loader::PbrtLoader;
 use super::state::MatRef;
-use crate::bsdf::material::textured::{FloatTex, RgbTex, const_float, const_rgb};
 use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};
-use crate::bsdf::{Material, MixMaterial, TexturedConductor, TexturedMaterial, TexturedRoughness};
+use crate::bsdf::{ConductorSpec, Material, MixMaterial, Roughness};
 use crate::spectrum::{Rgb, spectrum_file_to_rgb, spectrum_samples_to_rgb};
-use crate::texture::{SpectrumTexture, TextureEvalContext};
+use crate::texture::{FloatTexture, SpectrumTexture, Texture, TextureEvalContext};
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, SpectrumOrTexture, SpectrumValue};
 use std::path::Path;
 use std::sync::Arc;
@@ -97,19 +95,19 @@ impl PbrtLoader {
         name: &str,
         default: Rgb,
         loc: &Loc,
-    ) -> Result<RgbTex, ParseError> {
+    ) -> Result<SpectrumTexture, ParseError> {
         match ps.get_spectrum_or_texture(name) {
-            None => Ok(const_rgb(default)),
-            Some(SpectrumOrTexture::Value(v)) => Ok(const_rgb(self.spectrum_value(v, false, loc)?)),
+            None => Ok(default.into()),
+            Some(SpectrumOrTexture::Value(v)) => Ok(self.spectrum_value(v, false, loc)?.into()),
             Some(SpectrumOrTexture::Texture(t)) => {
                 if let Some(tex) = self.textures.spectrum(t) {
                     return Ok(tex);
                 }
                 match self.textures.float(t) {
-                    Some(f) => Ok(Arc::new(SpectrumTexture::Scale {
-                        tex: const_rgb(Rgb::ONE),
-                        scale: f,
-                    })),
+                    Some(f) => Ok(Texture::Scale {
+                        tex: Arc::new(Rgb::ONE.into()),
+                        scale: Arc::new(f),
+                    }),
                     None => Err(ParseError::scene(
                         loc,
                         format!("texture \"{t}\" is not defined"),
@@ -124,12 +122,12 @@ impl PbrtLoader {
         &mut self,
         ps: &ParamSet,
         name: &str,
-        default: FloatTex,
+        default: FloatTexture,
         loc: &Loc,
-    ) -> Result<FloatTex, ParseError> {
+    ) -> Result<FloatTexture, ParseError> {
         match ps.get_float_or_texture(name) {
             None => Ok(default),
-            Some(FloatOrTexture::Value(v)) => Ok(const_float(v as f32)),
+            Some(FloatOrTexture::Value(v)) => Ok((v as f32).into()),
             Some(FloatOrTexture::Texture(t)) => self.textures.float(t).ok_or_else(|| {
                 ParseError::scene(loc, format!("float texture \"{t}\" is not defined"))
             }),
@@ -144,7 +142,7 @@ impl PbrtLoader {
             return Ok(v as f32);
         }
         if let Some(FloatOrTexture::Texture(_)) = ps.get_float_or_texture(name) {
-            let t = self.float_tex(ps, name, const_float(1.5), loc)?;
+            let t = self.float_tex(ps, name, 1.5.into(), loc)?;
             if t.as_constant().is_none() {
                 let what = format!("a textured \"{name}\"");
                 self.warnings.warn_once(
@@ -165,12 +163,12 @@ impl PbrtLoader {
         ps: &ParamSet,
         prefix: &str,
         loc: &Loc,
-    ) -> Result<TexturedRoughness, ParseError> {
-        let r = self.float_tex(ps, &format!("{prefix}roughness"), const_float(0.0), loc)?;
+    ) -> Result<Roughness<FloatTexture>, ParseError> {
+        let r = self.float_tex(ps, &format!("{prefix}roughness"), 0.0.into(), loc)?;
         let u = self.float_tex(ps, &format!("{prefix}uroughness"), r.clone(), loc)?;
         let v = self.float_tex(ps, &format!("{prefix}vroughness"), r, loc)?;
         let remap = ps.bool_or("remaproughness", true);
-        Ok(TexturedRoughness { u, v, remap })
+        Ok(Roughness { u, v, remap })
     }
 
     fn conductor_spec(
@@ -178,15 +176,15 @@ impl PbrtLoader {
         ps: &ParamSet,
         prefix: &str,
         loc: &Loc,
-    ) -> Result<TexturedConductor, ParseError> {
+    ) -> Result<ConductorSpec<SpectrumTexture>, ParseError> {
         if ps.find("reflectance").is_some() {
             let r = self.rgb_tex(ps, "reflectance", Rgb::ONE, loc)?;
-            return Ok(TexturedConductor::Reflectance(r));
+            return Ok(ConductorSpec::Reflectance(r));
         }
         let cu = |w: &str| named_spectrum_rgb(&format!("metal-Cu-{w}")).unwrap_or(Rgb::ONE);
         let eta = self.rgb_tex(ps, &format!("{prefix}eta"), cu("eta"), loc)?;
         let k = self.rgb_tex(ps, &format!("{prefix}k"), cu("k"), loc)?;
-        Ok(TexturedConductor::EtaK { eta, k })
+        Ok(ConductorSpec::EtaK { eta, k })
     }
 
     fn build_material(
@@ -198,40 +196,38 @@ impl PbrtLoader {
         let half = Rgb::splat(0.5);
         let depth = |ps: &ParamSet, d: i64| ps.int_or("maxdepth", d).clamp(1, 100) as u32;
         let nsamples = |ps: &ParamSet| ps.int_or("nsamples", 1).clamp(1, 64) as u32;
-        let textured = match ty {
-            "diffuse" => TexturedMaterial::Diffuse {
+        let material = match ty {
+            "diffuse" => Material::Diffuse {
                 reflectance: self.rgb_tex(ps, "reflectance", half, loc)?,
             },
-            "conductor" => TexturedMaterial::Conductor {
+            "conductor" => Material::Conductor {
                 spec: self.conductor_spec(ps, "", loc)?,
                 roughness: self.roughness(ps, "", loc)?,
             },
-            "dielectric" => TexturedMaterial::Dielectric {
+            "dielectric" => Material::Dielectric {
                 eta: self.eta_param(ps, "eta", loc)?,
                 roughness: self.roughness(ps, "", loc)?,
             },
-            "thindielectric" => {
-                return Ok(Some(Material::ThinDielectric {
-                    eta: self.eta_param(ps, "eta", loc)?,
-                }));
-            }
-            "diffusetransmission" => TexturedMaterial::DiffuseTransmission {
+            "thindielectric" => Material::ThinDielectric {
+                eta: self.eta_param(ps, "eta", loc)?,
+            },
+            "diffusetransmission" => Material::DiffuseTransmission {
                 reflectance: self.rgb_tex(ps, "reflectance", Rgb::splat(0.25), loc)?,
                 transmittance: self.rgb_tex(ps, "transmittance", Rgb::splat(0.25), loc)?,
                 scale: ps.float_or("scale", 1.0) as f32,
             },
-            "coateddiffuse" => TexturedMaterial::CoatedDiffuse {
+            "coateddiffuse" => Material::CoatedDiffuse {
                 reflectance: self.rgb_tex(ps, "reflectance", half, loc)?,
                 roughness: self.roughness(ps, "", loc)?,
-                thickness: self.float_tex(ps, "thickness", const_float(0.01), loc)?,
+                thickness: self.float_tex(ps, "thickness", 0.01.into(), loc)?,
                 eta: self.eta_param(ps, "eta", loc)?,
                 max_depth: depth(ps, 10),
                 n_samples: nsamples(ps),
             },
-            "coatedconductor" => TexturedMaterial::CoatedConductor {
+            "coatedconductor" => Material::CoatedConductor {
                 interface_roughness: self.roughness(ps, "interface.", loc)?,
                 interface_eta: self.eta_param(ps, "interface.eta", loc)?,
-                thickness: self.float_tex(ps, "thickness", const_float(0.01), loc)?,
+                thickness: self.float_tex(ps, "thickness", 0.01.into(), loc)?,
                 conductor: self.conductor_spec(ps, "conductor.", loc)?,
                 conductor_roughness: self.roughness(ps, "conductor.", loc)?,
                 max_depth: depth(ps, 10),
@@ -246,7 +242,7 @@ impl PbrtLoader {
             }
             _ => return Ok(None),
         };
-        Ok(Some(textured.into_material()))
+        Ok(Some(material))
     }
 
     /// A material named in a `mix`: its value, or `None` for `interface`.
@@ -277,7 +273,7 @@ impl PbrtLoader {
                 "mix: \"string materials\" must name two materials",
             ));
         }
-        let amount = self.float_tex(ps, "amount", const_float(0.5), loc)?;
+        let amount = self.float_tex(ps, "amount", 0.5.into(), loc)?;
         let (r0, m0) = self.mix_part(&names[0], loc)?;
         let (r1, m1) = self.mix_part(&names[1], loc)?;
         match amount.as_constant() {
@@ -336,9 +332,7 @@ impl PbrtLoader {
                     loc,
                     format!("unknown material type \"{ty}\"; using diffuse"),
                 );
-                Material::Diffuse {
-                    reflectance: Rgb::splat(0.5),
-                }
+                Material::diffuse(Rgb::splat(0.5))
             }
         };
         for p in ["displacement", "normalmap"] {

@@ -19,19 +19,19 @@
 //! file, even inside included files (as pbrt-v4 does).
 
 mod lights;
+mod loader;
 mod materials;
 mod options;
 mod shapes;
-mod sink;
 mod state;
 
 use crate::bsdf::Material;
-use crate::render::RenderError;
+use crate::error::RenderError;
 use crate::scene::Scene;
 use lowdisc::catalog::SamplerName;
 use std::path::{Path, PathBuf};
 
-pub use sink::PbrtLoader;
+pub use loader::PbrtLoader;
 
 /// Options of [`load_pbrt_scene`].
 #[derive(Clone, Debug, Default)]
@@ -105,6 +105,12 @@ pub fn load_pbrt_scene(path: &Path, options: &LoadOptions) -> Result<LoadedScene
     pbrt_format::parse_file(path, &mut loader)
         .map_err(|e| RenderError::InvalidScene(e.to_string()))?;
     loader.finish()
+}
+
+/// Loads a pbrt-v4 scene file with default [`LoadOptions`], dropping its
+/// warnings and settings (use [`load_pbrt_scene`] to get them).
+pub fn load_scene_file(path: &Path) -> Result<Scene, RenderError> {
+    load_pbrt_scene(path, &LoadOptions::default()).map(|l| l.scene)
 }
 
 /// A material for a `measured` BSDF file: [`Material::measured_fallback`].

@@ -1,7 +1,7 @@
 //! Rendering options: `Camera`, `Film`, `Sampler`, `Integrator` and
 //! `PixelFilter`.
 
-use super::sink::PbrtLoader;
+use super::loader::PbrtLoader;
 use crate::camera::PerspectiveParams;
 use crate::filter::{Filter, FilterParams};
 use crate::scene::CameraSpec;

@@ -2,7 +2,7 @@
 //! patch meshes and Loop subdivision surfaces, with their material and area
 //! light.
 
-use super::sink::{PbrtLoader, ShapeDef};
+use super::loader::{PbrtLoader, ShapeDef};
 use super::state::{AreaSpec, MatRef};
 use crate::bsdf::Material;
 use crate::geometry::{
@@ -167,9 +167,8 @@ impl PbrtLoader {
             MatRef::Interface => None,
             MatRef::Default => Some(*self.default_material.get_or_insert_with(|| {
                 self.counts.materials += 1;
-                self.builder.add_material(Material::Diffuse {
-                    reflectance: Rgb::splat(0.5),
-                })
+                self.builder
+                    .add_material(Material::diffuse(Rgb::splat(0.5)))
             })),
         }
     }

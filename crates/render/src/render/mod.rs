@@ -16,101 +16,21 @@
 //! **Progress** goes through a [`ProgressSink`] (any `Fn(Progress) + Sync`
 //! closure): the library itself never prints.
 
-mod error;
+mod options;
 
-pub use error::RenderError;
+pub use crate::error::RenderError;
+pub use options::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE, RenderOptions};
 
 use crate::camera::camera_sample;
 use crate::film::{Film, FilmTile, PixelBounds};
-use crate::integrator::{MAX_DEPTH_LIMIT, PathIntegrator, PathStats};
+use crate::integrator::PathStats;
 use crate::scene::Scene;
 use crate::spectrum::Rgb;
-use lowdisc::catalog::{SamplerConfig, SamplerName};
+use lowdisc::catalog::SamplerConfig;
 use lowdisc::pixel::{PixelSampler, Sampler};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
-
-/// The most samples per pixel accepted.
-pub const MAX_SPP: u32 = 1 << 24;
-/// The most worker threads accepted.
-pub const MAX_THREADS: usize = 1024;
-
-/// How to render.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RenderOptions {
-    /// The pixel sampler.
-    pub sampler: SamplerName,
-    /// Seed of the sampler's randomization (and of the BSDFs' random walks).
-    pub seed: u64,
-    /// Samples per pixel.
-    pub spp: u32,
-    /// The path tracer.
-    pub integrator: PathIntegrator,
-    /// Worker threads; `None` uses rayon's global pool (all cores).
-    pub threads: Option<usize>,
-    /// Tile side in pixels.
-    pub tile_size: u32,
-    /// The paper permutation's threshold in `[0, 1]` (samplers `paper` and
-    /// `paper-repro`; ignored by the others).
-    pub threshold: f64,
-    /// Let the paper permutation act on the film dimensions 0-1 too.
-    pub paper_all_dims: bool,
-}
-
-impl Default for RenderOptions {
-    fn default() -> Self {
-        RenderOptions {
-            sampler: SamplerName::ZSobol,
-            seed: 0,
-            spp: 16,
-            integrator: PathIntegrator::default(),
-            threads: None,
-            tile_size: 16,
-            threshold: SamplerConfig::DEFAULT_THRESHOLD,
-            paper_all_dims: false,
-        }
-    }
-}
-
-impl RenderOptions {
-    /// Checks every field's range.
-    pub fn validate(&self) -> Result<(), RenderError> {
-        let bad = |m: String| Err(RenderError::InvalidOptions(m));
-        if self.spp == 0 || self.spp > MAX_SPP {
-            return bad(format!(
-                "samples per pixel {} must be between 1 and {MAX_SPP}",
-                self.spp
-            ));
-        }
-        if self.integrator.max_depth > MAX_DEPTH_LIMIT {
-            return bad(format!(
-                "max depth {} exceeds {MAX_DEPTH_LIMIT}",
-                self.integrator.max_depth
-            ));
-        }
-        if self.tile_size == 0 || self.tile_size > 4096 {
-            return bad(format!(
-                "tile size {} must be between 1 and 4096",
-                self.tile_size
-            ));
-        }
-        if !(0.0..=1.0).contains(&self.threshold) {
-            return bad(format!(
-                "paper threshold {} must be in [0, 1]",
-                self.threshold
-            ));
-        }
-        if let Some(t) = self.threads {
-            if t == 0 || t > MAX_THREADS {
-                return bad(format!(
-                    "thread count {t} must be between 1 and {MAX_THREADS}"
-                ));
-            }
-        }
-        Ok(())
-    }
-}
 
 /// A progress report, sent after every finished tile.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -213,14 +133,11 @@ pub fn render(
 ) -> Result<RenderOutput, RenderError> {
     opts.validate()?;
     let mut film = Film::new(&scene.film().params).map_err(RenderError::Film)?;
-    let [width, height] = film.full_resolution();
-    let mut config = SamplerConfig::new(opts.sampler);
-    config.seed = opts.seed;
-    config.spp = opts.spp;
-    config.resolution = [width, height];
-    config.threshold = opts.threshold;
-    config.paper_all_dims = opts.paper_all_dims;
-    let sampler = config.build()?;
+    let sampler = SamplerConfig {
+        resolution: film.full_resolution(),
+        ..opts.sampler
+    }
+    .build()?;
     let mut warnings = Vec::new();
     if scene.lights().is_empty() {
         warnings.push("the scene has no lights: the image is black".to_string());
@@ -228,7 +145,7 @@ pub fn render(
     let rects = film.pixel_bounds().tiles(opts.tile_size);
     let total = Totals {
         tiles: rects.len(),
-        samples: film.pixel_bounds().area() as u64 * u64::from(opts.spp),
+        samples: film.pixel_bounds().area() as u64 * u64::from(opts.sampler.spp),
         done: AtomicUsize::new(0),
         samples_done: AtomicU64::new(0),
         rays: AtomicU64::new(0),
@@ -315,19 +232,18 @@ fn render_tile(
 ) -> TileResult {
     let mut sampler = sampler.with_stream(k);
     let mut stats = PathStats::default();
-    let mut integrator = opts.integrator;
-    integrator.bsdf_seed = opts.seed;
+    let (integrator, seed) = (&opts.integrator, opts.sampler.seed);
     let (camera, filter) = (scene.camera(), &scene.film().filter);
     let bounds: PixelBounds = film.bounds();
     let mut samples = 0;
     for [x, y] in bounds.pixels() {
-        for s in 0..opts.spp {
+        for s in 0..opts.sampler.spp {
             sampler.start_pixel_sample([x as u32, y as u32], s, 0);
             let u_film = sampler.get_pixel_2d();
             let u_lens = sampler.get_2d();
             let cs = camera_sample(filter, [x, y], u_film, u_lens);
             let ray = camera.generate_ray_for(&cs);
-            let l: Rgb = integrator.li(scene, ray, &mut sampler, &mut stats);
+            let l: Rgb = integrator.li(scene, ray, &mut sampler, seed, &mut stats);
             film.add_sample([x, y], l, cs.filter_weight);
             samples += 1;
         }

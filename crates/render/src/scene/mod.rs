@@ -16,14 +16,13 @@ use crate::accel::{Accel, Hit};
 use crate::bsdf::Material;
 use crate::bvh::BvhStats;
 use crate::camera::{PerspectiveCamera, PerspectiveParams};
+use crate::error::RenderError;
 use crate::film::FilmParams;
 use crate::filter::Filter;
 use crate::geometry::{Disk, Prim, ShapeSet, Sphere, TriangleMesh};
 use crate::light::{DiffuseAreaLight, Light, LightSampler, LightType};
 use crate::math::{Bounds3, Ray, Transform};
-use crate::render::RenderError;
 use crate::spectrum::Rgb;
-use std::path::Path;
 
 /// Diffuse emission of a shape (pbrt's `AreaLightSource "diffuse"`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -302,11 +301,4 @@ impl Scene {
         self.film.params.resolution = resolution;
         Ok(())
     }
-}
-
-/// Loads a pbrt-v4 scene file with default [`crate::pbrt::LoadOptions`],
-/// dropping its warnings and settings (use [`crate::pbrt::load_pbrt_scene`]
-/// to get them).
-pub fn load_scene_file(path: &Path) -> Result<Scene, RenderError> {
-    crate::pbrt::load_pbrt_scene(path, &crate::pbrt::LoadOptions::default()).map(|l| l.scene)
 }

@@ -1,5 +1,5 @@
-//! pbrt-v4 textures: constant, imagemap, checkerboard, scale and mix, as
-//! float and RGB ("spectrum") textures, evaluated at a surface point's `uv`
+//! pbrt-v4 textures: constant, imagemap, checkerboard, scale and mix, as one
+//! generic [`Texture`] over float and RGB ("spectrum") values, evaluated at a surface point's `uv`
 //! (and position, for 3-D checkerboards and planar mappings).
 //!
 //! Evaluation is a point lookup: there are no ray differentials, so image
@@ -24,6 +24,7 @@ pub use registry::{TextureError, TextureRegistry};
 
 use crate::math::{Point2, Point3, Transform, Vec3};
 use crate::spectrum::Rgb;
+use std::ops::{Add, Mul};
 use std::sync::Arc;
 
 /// Where a texture is evaluated.
@@ -168,120 +169,96 @@ impl ImageTexture {
     }
 }
 
-/// A scalar texture.
-#[derive(Clone, Debug, PartialEq)]
-pub enum FloatTexture {
-    /// A constant (`value`).
-    Constant(f32),
-    /// An image map.
-    Image(ImageTexture),
-    /// `tex1` or `tex2` by checker parity.
-    Checkerboard {
-        /// The pattern.
-        checker: Checker,
-        /// Where the pattern is even.
-        tex1: Arc<FloatTexture>,
-        /// Where it is odd.
-        tex2: Arc<FloatTexture>,
-    },
-    /// `tex * scale`.
-    Scale {
-        /// The texture.
-        tex: Arc<FloatTexture>,
-        /// The factor.
-        scale: Arc<FloatTexture>,
-    },
-    /// `(1 - amount) tex1 + amount tex2`.
-    Mix {
-        /// At amount 0.
-        tex1: Arc<FloatTexture>,
-        /// At amount 1.
-        tex2: Arc<FloatTexture>,
-        /// The blend.
-        amount: Arc<FloatTexture>,
-    },
+/// What a texture can return: `f32` (pbrt's float textures) or [`Rgb`]
+/// (its spectrum textures). The arithmetic is what `scale` and `mix` need.
+pub trait TextureValue:
+    Copy + std::fmt::Debug + PartialEq + Mul<f32, Output = Self> + Add<Output = Self>
+{
+    /// Zero (what `scale` returns for a zero factor).
+    const ZERO: Self;
+    /// `v` (in every channel).
+    fn splat(v: f32) -> Self;
+    /// The value of an image texture at `ctx`.
+    fn from_image(image: &ImageTexture, ctx: &TextureEvalContext) -> Self;
 }
 
-impl FloatTexture {
-    /// The value at `ctx`.
-    pub fn evaluate(&self, ctx: &TextureEvalContext) -> f32 {
-        match self {
-            FloatTexture::Constant(v) => *v,
-            FloatTexture::Image(t) => t.evaluate_float(ctx),
-            FloatTexture::Checkerboard {
-                checker,
-                tex1,
-                tex2,
-            } => {
-                if checker.is_first(ctx) {
-                    tex1.evaluate(ctx)
-                } else {
-                    tex2.evaluate(ctx)
-                }
-            }
-            FloatTexture::Scale { tex, scale } => {
-                let s = scale.evaluate(ctx);
-                if s == 0.0 { 0.0 } else { tex.evaluate(ctx) * s }
-            }
-            FloatTexture::Mix { tex1, tex2, amount } => {
-                let a = amount.evaluate(ctx);
-                let t1 = if a != 1.0 { tex1.evaluate(ctx) } else { 0.0 };
-                let t2 = if a != 0.0 { tex2.evaluate(ctx) } else { 0.0 };
-                (1.0 - a) * t1 + a * t2
-            }
-        }
+impl TextureValue for f32 {
+    const ZERO: f32 = 0.0;
+    fn splat(v: f32) -> f32 {
+        v
     }
-
-    /// The value when the texture is a constant.
-    pub fn as_constant(&self) -> Option<f32> {
-        match self {
-            FloatTexture::Constant(v) => Some(*v),
-            _ => None,
-        }
+    fn from_image(image: &ImageTexture, ctx: &TextureEvalContext) -> f32 {
+        image.evaluate_float(ctx)
     }
 }
 
-/// An RGB texture (pbrt's "spectrum" texture).
+impl TextureValue for Rgb {
+    const ZERO: Rgb = Rgb::ZERO;
+    fn splat(v: f32) -> Rgb {
+        Rgb::splat(v)
+    }
+    fn from_image(image: &ImageTexture, ctx: &TextureEvalContext) -> Rgb {
+        image.evaluate_rgb(ctx)
+    }
+}
+
+/// A texture returning `T` ([`FloatTexture`] or [`SpectrumTexture`]).
+///
+/// A constant is stored inline and evaluates without indirection (the fast
+/// path of every untextured material parameter); the other variants share
+/// their data, so cloning a texture is cheap.
 #[derive(Clone, Debug, PartialEq)]
-pub enum SpectrumTexture {
+pub enum Texture<T> {
     /// A constant (`value`).
-    Constant(Rgb),
+    Constant(T),
     /// An image map.
-    Image(ImageTexture),
+    Image(Arc<ImageTexture>),
     /// `tex1` or `tex2` by checker parity.
     Checkerboard {
         /// The pattern.
-        checker: Checker,
+        checker: Arc<Checker>,
         /// Where the pattern is even.
-        tex1: Arc<SpectrumTexture>,
+        tex1: Arc<Texture<T>>,
         /// Where it is odd.
-        tex2: Arc<SpectrumTexture>,
+        tex2: Arc<Texture<T>>,
     },
     /// `tex * scale` (a float texture).
     Scale {
         /// The texture.
-        tex: Arc<SpectrumTexture>,
+        tex: Arc<Texture<T>>,
         /// The factor.
         scale: Arc<FloatTexture>,
     },
     /// `(1 - amount) tex1 + amount tex2`.
     Mix {
         /// At amount 0.
-        tex1: Arc<SpectrumTexture>,
+        tex1: Arc<Texture<T>>,
         /// At amount 1.
-        tex2: Arc<SpectrumTexture>,
+        tex2: Arc<Texture<T>>,
         /// The blend.
         amount: Arc<FloatTexture>,
     },
 }
 
-impl SpectrumTexture {
+/// A scalar texture.
+pub type FloatTexture = Texture<f32>;
+/// An RGB texture (pbrt's "spectrum" texture).
+pub type SpectrumTexture = Texture<Rgb>;
+
+impl<T> From<T> for Texture<T> {
+    fn from(value: T) -> Texture<T> {
+        Texture::Constant(value)
+    }
+}
+
+impl<T: TextureValue> Texture<T> {
     /// The value at `ctx`.
-    pub fn evaluate(&self, ctx: &TextureEvalContext) -> Rgb {
+    #[inline]
+    pub fn evaluate(&self, ctx: &TextureEvalContext) -> T {
         match self {
-            SpectrumTexture::Constant(v) => *v,
-            SpectrumTexture::Image(t) => t.evaluate_rgb(ctx),
-            SpectrumTexture::Checkerboard {
+            Texture::Constant(v) => *v,
+            Texture::Image(t) => T::from_image(t, ctx),
+            Texture::Checkerboard {
                 checker,
                 tex1,
                 tex2,
@@ -292,25 +269,25 @@ impl SpectrumTexture {
                     tex2.evaluate(ctx)
                 }
             }
-            SpectrumTexture::Scale { tex, scale } => {
+            Texture::Scale { tex, scale } => {
                 let s = scale.evaluate(ctx);
                 if s == 0.0 {
-                    Rgb::ZERO
+                    T::ZERO
                 } else {
                     tex.evaluate(ctx) * s
                 }
             }
-            SpectrumTexture::Mix { tex1, tex2, amount } => {
+            Texture::Mix { tex1, tex2, amount } => {
                 let a = amount.evaluate(ctx);
                 let t1 = if a != 1.0 {
                     tex1.evaluate(ctx)
                 } else {
-                    Rgb::ZERO
+                    T::ZERO
                 };
                 let t2 = if a != 0.0 {
                     tex2.evaluate(ctx)
                 } else {
-                    Rgb::ZERO
+                    T::ZERO
                 };
                 t1 * (1.0 - a) + t2 * a
             }
@@ -318,10 +295,32 @@ impl SpectrumTexture {
     }
 
     /// The value when the texture is a constant.
-    pub fn as_constant(&self) -> Option<Rgb> {
+    #[inline]
+    pub fn as_constant(&self) -> Option<T> {
         match self {
-            SpectrumTexture::Constant(v) => Some(*v),
+            Texture::Constant(v) => Some(*v),
             _ => None,
+        }
+    }
+
+    /// A `scale` or `mix` of constants as the constant it is (so materials
+    /// using it keep the constant fast path); any other texture unchanged.
+    pub fn folded(self) -> Texture<T> {
+        let constant = match &self {
+            Texture::Scale { tex, scale } => {
+                tex.as_constant().is_some() && scale.as_constant().is_some()
+            }
+            Texture::Mix { tex1, tex2, amount } => {
+                tex1.as_constant().is_some()
+                    && tex2.as_constant().is_some()
+                    && amount.as_constant().is_some()
+            }
+            _ => false,
+        };
+        if constant {
+            Texture::Constant(self.evaluate(&TextureEvalContext::default()))
+        } else {
+            self
         }
     }
 }

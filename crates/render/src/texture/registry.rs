@@ -60,8 +60,8 @@ struct ImageKey {
 /// Float and spectrum textures by name, plus the image cache.
 #[derive(Clone, Debug, Default)]
 pub struct TextureRegistry {
-    float: HashMap<String, Arc<FloatTexture>>,
-    spectrum: HashMap<String, Arc<SpectrumTexture>>,
+    float: HashMap<String, FloatTexture>,
+    spectrum: HashMap<String, SpectrumTexture>,
     images: HashMap<ImageKey, Arc<TexImage>>,
 }
 
@@ -73,33 +73,29 @@ impl TextureRegistry {
 
     /// Defines (or redefines) a float texture; returns the one it replaces,
     /// so the caller can warn as pbrt does.
-    pub fn add_float(&mut self, name: &str, tex: FloatTexture) -> Option<Arc<FloatTexture>> {
-        self.float.insert(name.to_string(), Arc::new(tex))
+    pub fn add_float(&mut self, name: &str, tex: FloatTexture) -> Option<FloatTexture> {
+        self.float.insert(name.to_string(), tex)
     }
     /// Defines (or redefines) a spectrum texture; returns the one it replaces.
-    pub fn add_spectrum(
-        &mut self,
-        name: &str,
-        tex: SpectrumTexture,
-    ) -> Option<Arc<SpectrumTexture>> {
-        self.spectrum.insert(name.to_string(), Arc::new(tex))
+    pub fn add_spectrum(&mut self, name: &str, tex: SpectrumTexture) -> Option<SpectrumTexture> {
+        self.spectrum.insert(name.to_string(), tex)
     }
 
     /// The float texture `name`.
-    pub fn float(&self, name: &str) -> Option<Arc<FloatTexture>> {
+    pub fn float(&self, name: &str) -> Option<FloatTexture> {
         self.float.get(name).cloned()
     }
     /// The spectrum texture `name`.
-    pub fn spectrum(&self, name: &str) -> Option<Arc<SpectrumTexture>> {
+    pub fn spectrum(&self, name: &str) -> Option<SpectrumTexture> {
         self.spectrum.get(name).cloned()
     }
     /// The float texture `name`, or an error naming it.
-    pub fn require_float(&self, name: &str) -> Result<Arc<FloatTexture>, TextureError> {
+    pub fn require_float(&self, name: &str) -> Result<FloatTexture, TextureError> {
         self.float(name)
             .ok_or_else(|| TextureError::Missing("float", name.to_string()))
     }
     /// The spectrum texture `name`, or an error naming it.
-    pub fn require_spectrum(&self, name: &str) -> Result<Arc<SpectrumTexture>, TextureError> {
+    pub fn require_spectrum(&self, name: &str) -> Result<SpectrumTexture, TextureError> {
         self.spectrum(name)
             .ok_or_else(|| TextureError::Missing("spectrum", name.to_string()))
     }

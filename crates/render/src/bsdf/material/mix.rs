@@ -1,9 +1,9 @@
 //! pbrt-v4's `mix` material: one of two materials per shading point, chosen
 //! with a probability given by a (possibly textured) `amount`.
 
-use super::textured::FloatTex;
 use super::{BsdfContext, Material};
 use crate::math::Vec3;
+use crate::texture::FloatTexture;
 use lowdisc::hash::{hash_words, unit_f64};
 
 /// pbrt-v4's `mix` material: at each shading point one of two materials,
@@ -15,7 +15,7 @@ pub struct MixMaterial {
     /// The materials at amount 0 and 1.
     pub materials: [Material; 2],
     /// The probability of the second material.
-    pub amount: FloatTex,
+    pub amount: FloatTexture,
 }
 
 impl MixMaterial {

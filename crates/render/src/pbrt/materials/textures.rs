@@ -11,15 +11,14 @@
 //! `dots`, `fbm`, `marble`, `windy`, `wrinkled`, `ptex`, `directionmix`),
 //! which become a constant 0.5. A missing image file becomes grey 0.5.
 
-use super::const_float;
 use crate::math::Vec3;
-use crate::pbrt::sink::PbrtLoader;
+use crate::pbrt::loader::PbrtLoader;
 use crate::spectrum::Rgb;
 use crate::texture::{
-    Checker, ColorEncoding, FloatTexture, ImageTexture, SpectrumTexture, TextureEvalContext,
-    TextureMapping, WrapMode,
+    Checker, ColorEncoding, ImageTexture, Texture, TextureMapping, TextureValue, WrapMode,
 };
 use pbrt_format::{Loc, ParamSet, ParseError};
+use std::sync::Arc;
 
 fn vec3(v: Option<[f64; 3]>, default: Vec3) -> Vec3 {
     v.map_or(default, |v| {
@@ -136,68 +135,13 @@ impl PbrtLoader {
                 ));
             }
         };
-        let unknown = |me: &mut Self| {
-            let what = format!("texture class \"{class}\" (a constant 0.5 is used)");
-            me.unsupported(loc, &what);
-        };
         let replaced = if spectral {
-            let s = |me: &mut Self, p: &str, d: f32| me.rgb_tex(ps, p, Rgb::splat(d), loc);
-            let f = |me: &mut Self, p: &str, d: f32| me.float_tex(ps, p, const_float(d), loc);
-            let tex = match class {
-                "constant" => (*s(self, "value", 1.0)?).clone(),
-                "scale" => SpectrumTexture::Scale {
-                    tex: s(self, "tex", 1.0)?,
-                    scale: f(self, "scale", 1.0)?,
-                },
-                "mix" => SpectrumTexture::Mix {
-                    tex1: s(self, "tex1", 0.0)?,
-                    tex2: s(self, "tex2", 1.0)?,
-                    amount: f(self, "amount", 0.5)?,
-                },
-                "checkerboard" => SpectrumTexture::Checkerboard {
-                    checker: self.checker(ps, loc)?,
-                    tex1: s(self, "tex1", 1.0)?,
-                    tex2: s(self, "tex2", 0.0)?,
-                },
-                "imagemap" => match self.image_texture(ps, loc)? {
-                    Some(t) => SpectrumTexture::Image(t),
-                    None => SpectrumTexture::Constant(Rgb::splat(0.5)),
-                },
-                _ => {
-                    unknown(self);
-                    SpectrumTexture::Constant(Rgb::splat(0.5))
-                }
-            };
-            let tex = fold_spectrum(tex);
+            let param = |me: &mut Self, p: &str, d: f32| me.rgb_tex(ps, p, Rgb::splat(d), loc);
+            let tex = self.texture_of_class(class, ps, loc, param)?;
             self.textures.add_spectrum(name, tex).is_some()
         } else {
-            let f = |me: &mut Self, p: &str, d: f32| me.float_tex(ps, p, const_float(d), loc);
-            let tex = match class {
-                "constant" => (*f(self, "value", 1.0)?).clone(),
-                "scale" => FloatTexture::Scale {
-                    tex: f(self, "tex", 1.0)?,
-                    scale: f(self, "scale", 1.0)?,
-                },
-                "mix" => FloatTexture::Mix {
-                    tex1: f(self, "tex1", 0.0)?,
-                    tex2: f(self, "tex2", 1.0)?,
-                    amount: f(self, "amount", 0.5)?,
-                },
-                "checkerboard" => FloatTexture::Checkerboard {
-                    checker: self.checker(ps, loc)?,
-                    tex1: f(self, "tex1", 1.0)?,
-                    tex2: f(self, "tex2", 0.0)?,
-                },
-                "imagemap" => match self.image_texture(ps, loc)? {
-                    Some(t) => FloatTexture::Image(t),
-                    None => FloatTexture::Constant(0.5),
-                },
-                _ => {
-                    unknown(self);
-                    FloatTexture::Constant(0.5)
-                }
-            };
-            let tex = fold_float(tex);
+            let param = |me: &mut Self, p: &str, d: f32| me.float_tex(ps, p, d.into(), loc);
+            let tex = self.texture_of_class(class, ps, loc, param)?;
             self.textures.add_float(name, tex).is_some()
         };
         if replaced {
@@ -206,43 +150,47 @@ impl PbrtLoader {
         ps.warn_unused(&format!("texture \"{name}\""), &mut self.warnings);
         Ok(())
     }
-}
 
-/// A `scale` or `mix` of constants, as the constant it is (so materials
-/// using it keep the constant fast path).
-fn fold_float(tex: FloatTexture) -> FloatTexture {
-    let constant = match &tex {
-        FloatTexture::Scale { tex, scale } => {
-            tex.as_constant().is_some() && scale.as_constant().is_some()
-        }
-        FloatTexture::Mix { tex1, tex2, amount } => [tex1, tex2, amount]
-            .iter()
-            .all(|t| t.as_constant().is_some()),
-        _ => false,
-    };
-    if constant {
-        FloatTexture::Constant(tex.evaluate(&TextureEvalContext::default()))
-    } else {
-        tex
-    }
-}
-
-/// The RGB counterpart of [`fold_float`].
-fn fold_spectrum(tex: SpectrumTexture) -> SpectrumTexture {
-    let constant = match &tex {
-        SpectrumTexture::Scale { tex, scale } => {
-            tex.as_constant().is_some() && scale.as_constant().is_some()
-        }
-        SpectrumTexture::Mix { tex1, tex2, amount } => {
-            tex1.as_constant().is_some()
-                && tex2.as_constant().is_some()
-                && amount.as_constant().is_some()
-        }
-        _ => false,
-    };
-    if constant {
-        SpectrumTexture::Constant(tex.evaluate(&TextureEvalContext::default()))
-    } else {
-        tex
+    /// A texture of pbrt class `class` whose `T`-valued parameters `param`
+    /// reads (with the default it is given); constant sub-expressions are
+    /// folded into constants.
+    fn texture_of_class<T: TextureValue>(
+        &mut self,
+        class: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+        param: impl Fn(&mut Self, &str, f32) -> Result<Texture<T>, ParseError>,
+    ) -> Result<Texture<T>, ParseError> {
+        let amount = |me: &mut Self, p: &str, d: f32| -> Result<_, ParseError> {
+            Ok(Arc::new(me.float_tex(ps, p, d.into(), loc)?))
+        };
+        let sub = |me: &mut Self, p: &str, d: f32| Ok::<_, ParseError>(Arc::new(param(me, p, d)?));
+        let tex = match class {
+            "constant" => param(self, "value", 1.0)?,
+            "scale" => Texture::Scale {
+                tex: sub(self, "tex", 1.0)?,
+                scale: amount(self, "scale", 1.0)?,
+            },
+            "mix" => Texture::Mix {
+                tex1: sub(self, "tex1", 0.0)?,
+                tex2: sub(self, "tex2", 1.0)?,
+                amount: amount(self, "amount", 0.5)?,
+            },
+            "checkerboard" => Texture::Checkerboard {
+                checker: Arc::new(self.checker(ps, loc)?),
+                tex1: sub(self, "tex1", 1.0)?,
+                tex2: sub(self, "tex2", 0.0)?,
+            },
+            "imagemap" => match self.image_texture(ps, loc)? {
+                Some(t) => Texture::Image(Arc::new(t)),
+                None => Texture::Constant(T::splat(0.5)),
+            },
+            _ => {
+                let what = format!("texture class \"{class}\" (a constant 0.5 is used)");
+                self.unsupported(loc, &what);
+                Texture::Constant(T::splat(0.5))
+            }
+        };
+        Ok(tex.folded())
     }
 }

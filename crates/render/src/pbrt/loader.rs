@@ -1,4 +1,4 @@
-//! [`PbrtLoader`]: the [`CallSink`] that receives every directive and keeps
+//! [`PbrtLoader`]: the [`ParserTarget`] that receives every directive and keeps
 //! the loader's state; shapes, materials, lights and rendering options are
 //! handled in sibling modules.
 
@@ -6,13 +6,15 @@ use super::state::{MatRef, StateStack, pbrt_matrix};
 use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
+use crate::error::RenderError;
 use crate::film::FilmParams;
 use crate::filter::Filter;
 use crate::math::Transform;
-use crate::render::RenderError;
 use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
 use crate::texture::TextureRegistry;
-use pbrt_format::{Call, CallSink, FileKind, Loc, ParamSet, ParseError, TargetResult, Warnings};
+use pbrt_format::{
+    Directive, FileKind, Loc, ParamSet, ParseError, ParserTarget, TargetResult, Warnings,
+};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
@@ -180,14 +182,14 @@ impl PbrtLoader {
     }
 }
 
-impl CallSink for PbrtLoader {
-    fn call(&mut self, call: Call, loc: &Loc) -> TargetResult {
-        match call {
-            Call::Option(p) => {
+impl ParserTarget for PbrtLoader {
+    fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult {
+        match directive {
+            Directive::Option(p) => {
                 let what = format!("Option \"{}\"", p.name);
                 self.unsupported(loc, &what);
             }
-            Call::ColorSpace(name) => {
+            Directive::ColorSpace(name) => {
                 if name != "srgb" {
                     self.warn(
                         loc,
@@ -195,20 +197,20 @@ impl CallSink for PbrtLoader {
                     );
                 }
             }
-            Call::Identity => self.state.cur.ctm = Transform::IDENTITY,
-            Call::Translate(d) => self.state.translate(d),
-            Call::Scale(s) => self.state.scale(s, loc)?,
-            Call::Rotate(a, axis) => self.state.rotate(a, axis, loc)?,
-            Call::LookAt(e, l, u) => self.state.look_at(e, l, u, loc)?,
-            Call::ConcatTransform(m) => {
+            Directive::Identity => self.state.cur.ctm = Transform::IDENTITY,
+            Directive::Translate(d) => self.state.translate(d),
+            Directive::Scale(s) => self.state.scale(s, loc)?,
+            Directive::Rotate(a, axis) => self.state.rotate(a, axis, loc)?,
+            Directive::LookAt(e, l, u) => self.state.look_at(e, l, u, loc)?,
+            Directive::ConcatTransform(m) => {
                 let t = pbrt_matrix(m, loc)?;
                 self.state.concat(t);
             }
-            Call::Transform(m) => self.state.cur.ctm = pbrt_matrix(m, loc)?,
-            Call::CoordinateSystem(name) => {
+            Directive::Transform(m) => self.state.cur.ctm = pbrt_matrix(m, loc)?,
+            Directive::CoordinateSystem(name) => {
                 self.state.named.insert(name, self.state.cur.ctm);
             }
-            Call::CoordSysTransform(name) => match self.state.named.get(&name) {
+            Directive::CoordSysTransform(name) => match self.state.named.get(&name) {
                 Some(t) => self.state.cur.ctm = *t,
                 None => {
                     self.warn(
@@ -217,40 +219,40 @@ impl CallSink for PbrtLoader {
                     );
                 }
             },
-            Call::ActiveTransform(_) | Call::TransformTimes(..) => {
+            Directive::ActiveTransform(_) | Directive::TransformTimes(..) => {
                 self.unsupported(loc, "motion blur (ActiveTransform, TransformTimes)")
             }
-            Call::ReverseOrientation => {
+            Directive::ReverseOrientation => {
                 self.state.cur.reverse_orientation = !self.state.cur.reverse_orientation
             }
-            Call::Camera(ty, params) => self.camera_directive(&ty, &params, loc)?,
-            Call::Film(ty, params) => self.film_directive(&ty, &params, loc)?,
-            Call::Sampler(ty, params) => self.sampler_directive(&ty, &params, loc),
-            Call::Integrator(ty, params) => self.integrator_directive(&ty, &params, loc),
-            Call::PixelFilter(ty, params) => self.filter_directive(&ty, &params, loc)?,
-            Call::Accelerator(..) => {
+            Directive::Camera(ty, params) => self.camera_directive(&ty, &params, loc)?,
+            Directive::Film(ty, params) => self.film_directive(&ty, &params, loc)?,
+            Directive::Sampler(ty, params) => self.sampler_directive(&ty, &params, loc),
+            Directive::Integrator(ty, params) => self.integrator_directive(&ty, &params, loc),
+            Directive::PixelFilter(ty, params) => self.filter_directive(&ty, &params, loc)?,
+            Directive::Accelerator(..) => {
                 self.unsupported(loc, "Accelerator (the renderer always uses its SAH BVH)")
             }
-            Call::MakeNamedMedium(..) | Call::MediumInterface(..) => {
+            Directive::MakeNamedMedium(..) | Directive::MediumInterface(..) => {
                 self.unsupported(loc, "participating media")
             }
-            Call::WorldBegin => {
+            Directive::WorldBegin => {
                 self.state.cur.ctm = Transform::IDENTITY;
                 self.state.named.insert("world".into(), Transform::IDENTITY);
             }
-            Call::AttributeBegin => self.state.push(false),
-            Call::TransformBegin => self.state.push(true),
-            Call::AttributeEnd | Call::TransformEnd => self.attribute_end(loc),
-            Call::Attribute(target, _) => {
+            Directive::AttributeBegin => self.state.push(false),
+            Directive::TransformBegin => self.state.push(true),
+            Directive::AttributeEnd | Directive::TransformEnd => self.attribute_end(loc),
+            Directive::Attribute(target, _) => {
                 let what = format!("Attribute \"{target}\"");
                 self.unsupported(loc, &what);
             }
-            Call::Shape(ty, params) => self.shape_directive(ty, params, loc)?,
-            Call::Material(ty, params) => {
+            Directive::Shape(ty, params) => self.shape_directive(ty, params, loc)?,
+            Directive::Material(ty, params) => {
                 let m = self.create_material(&ty, &params, loc)?;
                 self.state.cur.material = m;
             }
-            Call::MakeNamedMaterial(name, params) => {
+            Directive::MakeNamedMaterial(name, params) => {
                 params.mark_used("type");
                 let ty = params.get_string("type").unwrap_or("").to_string();
                 let m = self.create_material(&ty, &params, loc)?;
@@ -258,32 +260,34 @@ impl CallSink for PbrtLoader {
                     self.warn(loc, format!("named material \"{name}\" redefined"));
                 }
             }
-            Call::NamedMaterial(name) => {
+            Directive::NamedMaterial(name) => {
                 let m = *self.named_materials.get(&name).ok_or_else(|| {
                     ParseError::scene(loc, format!("named material \"{name}\" is not defined"))
                 })?;
                 self.state.cur.material = m;
             }
-            Call::Texture(name, ty, class, params) => {
+            Directive::Texture(name, ty, class, params) => {
                 self.texture_directive(&name, &ty, &class, &params, loc)?
             }
-            Call::LightSource(ty, params) => self.light_directive(&ty, &params, loc)?,
-            Call::AreaLightSource(ty, params) => self.area_light_directive(&ty, &params, loc)?,
-            Call::ObjectBegin(name) => {
+            Directive::LightSource(ty, params) => self.light_directive(&ty, &params, loc)?,
+            Directive::AreaLightSource(ty, params) => {
+                self.area_light_directive(&ty, &params, loc)?
+            }
+            Directive::ObjectBegin(name) => {
                 if self.current_object.is_some() {
                     return Err(ParseError::scene(loc, "ObjectBegin inside ObjectBegin"));
                 }
                 self.state.push(false);
                 self.current_object = Some((name, Vec::new()));
             }
-            Call::ObjectEnd => match self.current_object.take() {
+            Directive::ObjectEnd => match self.current_object.take() {
                 Some((name, defs)) => {
                     self.objects.insert(name, defs);
                     self.attribute_end(loc);
                 }
                 None => self.warn(loc, "ObjectEnd without ObjectBegin; ignored"),
             },
-            Call::ObjectInstance(name) => self.object_instance(&name, loc)?,
+            Directive::ObjectInstance(name) => self.object_instance(&name, loc)?,
         }
         Ok(())
     }
