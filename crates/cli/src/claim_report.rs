@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use lowdisc_plot::{Color, LineChart, Series};
 use serde::Serialize;
 
@@ -193,7 +193,7 @@ fn chart(
 }
 
 fn write_file(path: &Path, contents: &str) -> Result<()> {
-    std::fs::write(path, contents).with_context(|| format!("cannot write `{}`", path.display()))
+    Ok(lowdisc_files::write_bytes(path, contents.as_bytes())?)
 }
 
 /// Writes `claim.md`, `claim.json` and the charts; returns the paths written.

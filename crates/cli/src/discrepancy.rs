@@ -14,7 +14,7 @@ use lowdisc_metrics::PointSet;
 use serde::Serialize;
 
 use crate::metric_rows::{self, MetricRow};
-use crate::{parse, pointfile};
+use crate::{limits, parse, pointfile};
 
 /// Which metric to compute.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -91,9 +91,12 @@ pub struct DiscrepancyArgs {
     /// Random anchored boxes of the paper's lower bound.
     #[arg(long, default_value_t = 10_000)]
     boxes: usize,
-    /// Largest estimated work accepted by the exact star discrepancy.
-    #[arg(long, default_value_t = 4e9)]
+    /// Largest estimated work (elementary operations) accepted by any metric.
+    #[arg(long, default_value_t = limits::DEFAULT_MAX_WORK)]
     max_work: f64,
+    /// Largest memory (MiB) the point set may take.
+    #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
+    max_memory: u64,
     /// Print JSON instead of a table.
     #[arg(long)]
     json: bool,
@@ -121,6 +124,7 @@ pub struct DiscrepancyConfig {
     source: Source,
     metric: Metric,
     options: metric_rows::Options,
+    max_memory: u64,
     json: bool,
 }
 
@@ -145,8 +149,10 @@ impl DiscrepancyArgs {
             }
             (None, None) => bail!("give --sampler NAME or --input FILE"),
         };
-        if self.max_work.is_nan() || self.max_work <= 0.0 {
-            bail!("--max-work must be positive");
+        limits::check_max_work(self.max_work)?;
+        if let Source::Sampler { n, dims, .. } = &source {
+            let bytes = lowdisc_metrics::cost::points_memory(*n as usize, dims.len());
+            limits::check_memory("the point set", bytes, self.max_memory)?;
         }
         Ok(DiscrepancyConfig {
             source,
@@ -156,6 +162,7 @@ impl DiscrepancyArgs {
                 seed: self.seed,
                 max_work: self.max_work,
             },
+            max_memory: self.max_memory,
             json: self.json,
         })
     }
@@ -172,7 +179,7 @@ struct Report<'a> {
 
 /// Runs `discrepancy`, printing to `out`.
 pub fn run(config: &DiscrepancyConfig, mut out: impl Write) -> Result<()> {
-    let (points, source) = load(&config.source)?;
+    let (points, source) = load(&config.source, config.max_memory)?;
     let rows = metric_rows::compute(&points, config.metric, &config.options)?;
     if config.json {
         let report = Report {
@@ -197,10 +204,10 @@ pub fn run(config: &DiscrepancyConfig, mut out: impl Write) -> Result<()> {
 }
 
 /// The point set and a description of its source.
-fn load(source: &Source) -> Result<(PointSet, String)> {
+fn load(source: &Source, max_memory: u64) -> Result<(PointSet, String)> {
     match source {
         Source::File(path) => Ok((
-            pointfile::read_points(path)?,
+            pointfile::read_points(path, max_memory)?,
             format!("file {}", path.display()),
         )),
         Source::Sampler { config, n, dims } => {

@@ -4,7 +4,8 @@
 //! arguments into a validated configuration (`into_config`), and runs it.
 //! Every failure ends as one line `error: ...` on stderr and exit status 1
 //! (clap's own usage errors exit with 2); a closed output pipe (`| head`)
-//! ends quietly with status 0.
+//! ends quietly with status 0. SIGINT and SIGTERM remove the temporary files
+//! of unfinished writes and exit with 130 and 143 (see `interrupt`).
 //!
 //! Adding a subcommand: a new module with an `Args` struct (clap derive),
 //! `into_config` and `run`, plus one variant in [`Command`] and one arm in
@@ -16,6 +17,8 @@ mod compose;
 mod discrepancy;
 mod experiment;
 mod figure;
+mod interrupt;
+mod limits;
 mod metric_rows;
 mod output;
 mod parse;
@@ -23,9 +26,10 @@ mod plots;
 mod pointfile;
 mod points;
 mod render_cmd;
+mod render_stats;
 mod spectrum;
 
-use std::io;
+use std::io::{self, Write};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -100,13 +104,22 @@ fn is_broken_pipe(err: &anyhow::Error) -> bool {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if let Err(err) = interrupt::install() {
+        report_error(&format!("cannot watch for SIGINT/SIGTERM: {err}"));
+        return ExitCode::FAILURE;
+    }
     match run(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(err) if is_broken_pipe(&err) => ExitCode::SUCCESS,
         Err(err) => {
-            let message = format!("{err:#}").replace('\n', " ");
-            eprintln!("error: {message}");
+            report_error(&format!("{err:#}"));
             ExitCode::FAILURE
         }
     }
+}
+
+/// Prints `error: MESSAGE` as one line on stderr. A stderr that cannot be
+/// written (closed, or a full disk) is ignored: the exit status still tells.
+fn report_error(message: &str) {
+    let _ = writeln!(io::stderr(), "error: {}", message.replace('\n', " "));
 }

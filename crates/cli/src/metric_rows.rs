@@ -6,12 +6,14 @@ use std::time::Instant;
 
 use anyhow::{Result, bail};
 use lowdisc_metrics::{
-    BoundsOptions, DistanceMetric, ExactOptions, L2Method, MetricsError, PointSet, distance_stats,
-    l2_discrepancies, l2_discrepancy, random_box_lower_bound, star_bounds, star_discrepancy_with,
+    BoundsOptions, DistanceMetric, ExactOptions, L2Method, MetricsError, PointSet, cost,
+    distance_stats, l2_discrepancies, l2_discrepancy, random_box_lower_bound, star_bounds,
+    star_discrepancy_with,
 };
 use serde::Serialize;
 
 use crate::discrepancy::Metric;
+use crate::limits;
 
 /// Options shared by the metrics.
 #[derive(Debug, Clone, Copy)]
@@ -73,13 +75,52 @@ fn exact_method(d: usize) -> &'static str {
     }
 }
 
+/// Whether a metric of estimated `work` may run: `Ok(true)` within
+/// `--max-work`; beyond it an error for a single metric, or (for
+/// [`Metric::All`]) a refused row in `rows` and `Ok(false)`.
+fn affordable(
+    rows: &mut Vec<MetricRow>,
+    all: bool,
+    name: &str,
+    work: f64,
+    max_work: f64,
+) -> Result<bool> {
+    match limits::check_work(name, work, max_work) {
+        Ok(()) => Ok(true),
+        Err(why) => refuse(rows, all, name, why.to_string(), 0.0).map(|()| false),
+    }
+}
+
+/// A metric that cannot run: the error `why` for a single metric, a row
+/// without value (method `refused: why`) for [`Metric::All`].
+fn refuse(
+    rows: &mut Vec<MetricRow>,
+    all: bool,
+    name: &str,
+    why: String,
+    seconds: f64,
+) -> Result<()> {
+    if !all {
+        bail!("{why}");
+    }
+    rows.push(MetricRow {
+        metric: name.into(),
+        value: None,
+        lower: None,
+        upper: None,
+        method: format!("refused: {why}"),
+        seconds,
+    });
+    Ok(())
+}
+
 /// Computes the rows of `metric` (all metrics for [`Metric::All`], where an
 /// unaffordable exact star discrepancy or a one-point distance becomes a row
 /// without value instead of an error).
 pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<Vec<MetricRow>> {
     let all = metric == Metric::All;
     let mut rows = Vec::new();
-    let d = points.dims();
+    let (n, d) = (points.len(), points.dims());
     if all || metric == Metric::Star {
         let exact = ExactOptions {
             max_work: options.max_work,
@@ -96,17 +137,14 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
                      use --metric star-bounds for lower and upper bounds",
                     options.max_work
                 );
-                if !all {
-                    bail!("{why}");
-                }
-                rows.push(MetricRow {
-                    metric: "star".into(),
-                    value: None,
-                    lower: None,
-                    upper: None,
-                    method: format!("refused: {why}"),
-                    seconds,
-                });
+                refuse(&mut rows, all, "star", why, seconds)?;
+            }
+            Err(MetricsError::TooManyDims { dims, limit }) => {
+                let why = format!(
+                    "exact star discrepancy supports at most {limit} dimensions, got {dims}; \
+                     use --metric star-bounds for lower and upper bounds"
+                );
+                refuse(&mut rows, all, "star", why, seconds)?;
             }
             Err(e) => return Err(e.into()),
         }
@@ -117,21 +155,27 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
             seed: options.seed,
             ..BoundsOptions::default()
         };
-        let (bounds, seconds) = timed(|| star_bounds(points, &bounds_options));
-        let bounds = bounds?;
-        rows.push(MetricRow {
-            metric: "star-bounds".into(),
-            value: None,
-            lower: Some(bounds.lower),
-            upper: Some(bounds.upper),
-            method: format!(
-                "lower: {}; upper: {}",
-                bounds.lower_method, bounds.upper_method
-            ),
-            seconds,
-        });
+        let work = cost::bounds_work(n, d, &bounds_options);
+        if affordable(&mut rows, all, "star-bounds", work, options.max_work)? {
+            let (bounds, seconds) = timed(|| star_bounds(points, &bounds_options));
+            let bounds = bounds?;
+            rows.push(MetricRow {
+                metric: "star-bounds".into(),
+                value: None,
+                lower: Some(bounds.lower),
+                upper: Some(bounds.upper),
+                method: format!(
+                    "lower: {}; upper: {}",
+                    bounds.lower_method, bounds.upper_method
+                ),
+                seconds,
+            });
+        }
     }
-    if all || metric == Metric::StarLower {
+    let work = cost::random_box_work(n, d, options.boxes);
+    if (all || metric == Metric::StarLower)
+        && affordable(&mut rows, all, "star-lower", work, options.max_work)?
+    {
         let (v, seconds) = timed(|| random_box_lower_bound(points, options.boxes, options.seed));
         let method = format!(
             "lower bound: worst of {} random anchored boxes (the paper's method), seed {}",
@@ -149,7 +193,16 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
     .filter(|(m, _, _)| all || metric == *m)
     .map(|(_, method, name)| (method, name))
     .collect();
-    if all {
+    let l2_affordable = l2_wanted.is_empty()
+        || affordable(
+            &mut rows,
+            all,
+            "l2 discrepancies",
+            cost::l2_work(n, d),
+            options.max_work,
+        )?;
+    if !l2_affordable {
+    } else if all {
         let (values, seconds) = timed(|| l2_discrepancies(points));
         for (method, name) in l2_wanted {
             let v = match method {
@@ -174,7 +227,13 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
                 method: "skipped: distances need at least 2 points".into(),
                 seconds: 0.0,
             });
-        } else {
+        } else if affordable(
+            &mut rows,
+            all,
+            "mindist",
+            cost::distance_work(n, d),
+            options.max_work,
+        )? {
             for (distance, name) in [
                 (DistanceMetric::Euclidean, "euclidean"),
                 (DistanceMetric::Toroidal, "toroidal"),

@@ -10,17 +10,28 @@
 use std::ops::Range;
 use std::path::Path;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use lowdisc::catalog::{Order, SamplerConfig, generate_points};
 use lowdisc_metrics::PointSet;
 
 /// `2^-32`: the scale from 32-bit digit words to `[0, 1)`.
 const WORD_SCALE: f64 = 1.0 / 4_294_967_296.0;
 
-/// Reads and validates a point file (see the module documentation).
-pub fn read_points(path: &Path) -> Result<PointSet> {
+/// Reads and validates a point file (see the module documentation) whose
+/// parsed points fit in `max_memory` MiB (`--max-memory`): every value takes
+/// at least two bytes of text and eight of memory, so the file may hold at
+/// most a fifth of that.
+pub fn read_points(path: &Path, max_memory: u64) -> Result<PointSet> {
     let name = path.display();
-    let bytes = std::fs::read(path).with_context(|| format!("cannot read `{name}`"))?;
+    let limit = max_memory.saturating_mul(1 << 20) / 5;
+    let bytes = lowdisc_files::read_input_limited(path, limit).map_err(|e| {
+        let hint = if e.io_error().kind() == std::io::ErrorKind::InvalidData {
+            " (raise --max-memory)"
+        } else {
+            ""
+        };
+        anyhow::anyhow!("{e}{hint}")
+    })?;
     let text = String::from_utf8(bytes).map_err(|e| {
         let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()]
             .iter()

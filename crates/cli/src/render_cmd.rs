@@ -9,22 +9,24 @@
 //! the time per phase to stdout. A scene file's own settings (sampler, spp,
 //! maxdepth, resolution, output file) apply unless a flag overrides them.
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_render::cornell::cornell_box;
+use lowdisc_render::film::PEAK_BYTES_PER_PIXEL;
 use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{MAX_SPP, Progress, RenderOptions, render};
 use lowdisc_render::scene::Scene;
 use std::collections::HashSet;
 
-use crate::parse;
+use crate::render_stats::{self, Phases};
+use crate::{limits, parse};
 
 /// The largest image side `--res` accepts.
 pub const MAX_SIDE: u32 = 16_384;
@@ -91,6 +93,9 @@ pub struct RenderArgs {
     /// Let the paper permutation act on the film dimensions 0-1 too.
     #[arg(long)]
     paper_all_dims: bool,
+    /// Largest memory (MiB) of the film and its image.
+    #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
+    max_memory: u64,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -128,6 +133,8 @@ pub struct RenderConfig {
     pub stats: bool,
     /// Suppress progress and warnings.
     pub quiet: bool,
+    /// Memory limit (MiB) of the film.
+    pub max_memory: u64,
 }
 
 impl RenderArgs {
@@ -146,14 +153,10 @@ impl RenderArgs {
         if let Some(out) = &self.output {
             check_output(out)?;
         }
-        if let Some(scene) = &self.scene {
-            if !scene.is_file() {
-                bail!("scene file `{}` does not exist", scene.display());
-            }
-        }
-        if let Some(env) = &self.envmap {
-            if !env.is_file() {
-                bail!("--envmap file `{}` does not exist", env.display());
+        for (what, file) in [("scene", &self.scene), ("--envmap", &self.envmap)] {
+            if let Some(file) = file {
+                lowdisc_files::check_input(file, u64::MAX)
+                    .with_context(|| format!("{what} file"))?;
             }
         }
         Ok(RenderConfig {
@@ -170,6 +173,7 @@ impl RenderArgs {
             paper_all_dims: self.paper_all_dims,
             stats: self.stats,
             quiet: self.quiet,
+            max_memory: self.max_memory,
         })
     }
 }
@@ -246,22 +250,17 @@ fn check_output(path: &Path) -> Result<()> {
     Ok(())
 }
 
-/// Time spent in each phase.
-#[derive(Debug, Default)]
-struct Phases {
-    load: Duration,
-    render: Duration,
-    write: Duration,
-}
-
 /// Prints each distinct warning once to stderr (nothing with `--quiet`).
 fn warn_once(seen: &mut HashSet<String>, quiet: bool, warning: &str) {
     if !quiet && seen.insert(warning.to_string()) {
-        if warning.contains("warning:") {
-            eprintln!("{warning}");
+        let prefix = if warning.contains("warning:") {
+            ""
         } else {
-            eprintln!("warning: {warning}");
-        }
+            "warning: "
+        };
+        // A stderr that cannot be written (closed, full) loses the warning,
+        // not the render.
+        let _ = writeln!(std::io::stderr(), "{prefix}{warning}");
     }
 }
 
@@ -288,8 +287,21 @@ fn prepare(
             }
             let s = &loaded.settings;
             sampler = s.sampler.unwrap_or(sampler);
-            spp = s.spp.unwrap_or(spp).clamp(1, MAX_SPP);
-            max_depth = s.max_depth.unwrap_or(max_depth).min(MAX_DEPTH_LIMIT);
+            spp = s.spp.unwrap_or(spp);
+            max_depth = s.max_depth.unwrap_or(max_depth);
+            // The scene's values obey the limits of the flags that override them.
+            if config.spp.is_none() && !(1..=MAX_SPP).contains(&spp) {
+                bail!(
+                    "{}: pixelsamples {spp} must be between 1 and {MAX_SPP} (the --spp limit)",
+                    path.display()
+                );
+            }
+            if config.max_depth.is_none() && max_depth > MAX_DEPTH_LIMIT {
+                bail!(
+                    "{}: maxdepth {max_depth} must be at most {MAX_DEPTH_LIMIT} (the --maxdepth limit)",
+                    path.display()
+                );
+            }
             if let Some(name) = &s.output {
                 output = scene_output(name);
             }
@@ -317,6 +329,9 @@ fn prepare(
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;
+    let [w, h] = scene.film().params.resolution;
+    let bytes = f64::from(w) * f64::from(h) * PEAK_BYTES_PER_PIXEL as f64;
+    limits::check_memory(&format!("a {w}x{h} film"), bytes, config.max_memory)?;
     Ok((scene, options, output))
 }
 
@@ -373,7 +388,8 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         .with_context(|| format!("cannot write `{}`", output.display()))?;
     phases.write = t2.elapsed();
     if config.stats {
-        print_stats(&scene, &out, &phases);
+        render_stats::print_stats(std::io::stdout().lock(), &scene, &out, &phases)
+            .context("cannot print the statistics")?;
     }
     Ok(())
 }
@@ -387,29 +403,4 @@ fn progress_bar(config: &RenderConfig) -> Option<ProgressBar> {
         .unwrap_or_else(|_| ProgressStyle::default_bar());
     bar.set_style(style);
     Some(bar)
-}
-
-fn print_stats(scene: &Scene, out: &lowdisc_render::render::RenderOutput, phases: &Phases) {
-    let s = &out.stats;
-    let b = scene.bvh_stats();
-    println!("primitives        {}", scene.prim_count());
-    println!("lights            {}", scene.lights().len());
-    println!("{b}");
-    println!("samples           {}", s.samples);
-    println!("rays traced       {}", s.rays);
-    println!(
-        "rays/s            {:.0} ({:.2} M)",
-        s.rays_per_second(),
-        s.rays_per_second() / 1e6
-    );
-    println!("nonfinite samples {}", s.nonfinite_samples);
-    println!("threads           {}", s.threads);
-    let build = b.build_time.as_secs_f64();
-    println!(
-        "time load         {:.3} s",
-        (phases.load.as_secs_f64() - build).max(0.0)
-    );
-    println!("time build (BVH)  {build:.3} s");
-    println!("time render       {:.3} s", phases.render.as_secs_f64());
-    println!("time write        {:.3} s", phases.write.as_secs_f64());
 }

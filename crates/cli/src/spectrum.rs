@@ -7,14 +7,14 @@ use std::io::Write;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use clap::Args;
 use lowdisc::catalog::{Order, SamplerConfig};
 use lowdisc_metrics::{RadialSpectrum, radial_power_spectrum};
 use lowdisc_plot::{LineChart, ScatterGrid, ScatterPanel, Series};
 use serde::Serialize;
 
-use crate::{compose, parse, plots, pointfile};
+use crate::{compose, limits, parse, plots, pointfile};
 
 /// The long help of `spectrum` (`lowdisc spectrum --help`).
 pub const LONG_ABOUT: &str = "\
@@ -66,6 +66,12 @@ pub struct SpectrumArgs {
     /// Also print the spectra as JSON on stdout.
     #[arg(long)]
     json: bool,
+    /// Largest estimated work (elementary operations) of one spectrum.
+    #[arg(long, default_value_t = limits::DEFAULT_MAX_WORK)]
+    max_work: f64,
+    /// Largest memory (MiB) of one spectrum's phase tables.
+    #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
+    max_memory: u64,
 }
 
 /// A validated `spectrum` invocation.
@@ -101,6 +107,16 @@ impl SpectrumArgs {
             bail!("--max-frequency must lie in 1..=4096");
         }
         lowdisc_plot::Format::from_path(&self.output)?;
+        limits::check_max_work(self.max_work)?;
+        let (n, k) = (self.n as usize, self.max_frequency);
+        let what = format!("the spectrum of {n} points up to frequency {k}");
+        limits::check_work(
+            &what,
+            lowdisc_metrics::cost::spectrum_work(n, k),
+            self.max_work,
+        )?;
+        let bytes = lowdisc_metrics::cost::spectrum_memory(n, k);
+        limits::check_memory(&what, bytes, self.max_memory)?;
         Ok(SpectrumConfig {
             samplers,
             n: self.n,
@@ -181,8 +197,7 @@ pub fn run(config: &SpectrumConfig, mut out: impl Write) -> Result<()> {
     }
     compose::grid(rows).save(&config.output)?;
     let csv = csv_path(&config.output);
-    std::fs::write(&csv, to_csv(&entries))
-        .with_context(|| format!("cannot write `{}`", csv.display()))?;
+    lowdisc_files::write_bytes(&csv, to_csv(&entries).as_bytes())?;
     if config.json {
         serde_json::to_writer_pretty(&mut out, &entries)?;
         writeln!(out)?;

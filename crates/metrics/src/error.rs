@@ -67,6 +67,18 @@ pub enum MetricsError {
         /// The configured limit.
         limit: f64,
     },
+    /// The exact star discrepancy's recursion (one level per dimension) would
+    /// be deeper than [`crate::MAX_EXACT_DIMS`].
+    #[error(
+        "exact star discrepancy supports at most {limit} dimensions, got {dims}; \
+         use star_bounds (lower and upper bounds) instead"
+    )]
+    TooManyDims {
+        /// Dimension count given.
+        dims: usize,
+        /// The largest dimension count accepted.
+        limit: usize,
+    },
     /// The metric needs more points than given (e.g. distances need two).
     #[error("this metric needs at least {needed} points, got {got}")]
     TooFewPoints {

@@ -12,10 +12,12 @@
 //! | minimum / mean NN distance | [`distance_stats`], [`min_distance`] | Euclidean or toroidal | uniform grid, ring search | about `N·3^d` |
 //! | radial power spectrum (2-D) | [`radial_power_spectrum`] | `abs(Σ e^{−2πi k·x})²/N` averaged over rings | separable phases | `N K²` |
 //!
-//! Details, formulas and references are in each module's documentation: [`star`],
-//! [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon and sum in a fixed
+//! Module [`cost`] estimates every metric's work and memory before it runs, so
+//! callers can refuse unaffordable jobs. Details, formulas and references are in each
+//! module's documentation: [`star`], [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon and sum in a fixed
 //! order, so every result is bit-identical whatever the thread count.
 
+pub mod cost;
 pub mod distance;
 mod error;
 pub mod l2;
@@ -31,7 +33,7 @@ pub use l2::{L2Discrepancies, L2Method, l2_discrepancies, l2_discrepancy};
 pub use points::PointSet;
 pub use spectrum::{RadialSpectrum, radial_power_spectrum};
 pub use star::{
-    BoundsOptions, ExactOptions, StarBounds, estimated_work, grid_upper_bound,
+    BoundsOptions, ExactOptions, MAX_EXACT_DIMS, StarBounds, estimated_work, grid_upper_bound,
     random_box_lower_bound, star_bounds, star_discrepancy, star_discrepancy_1d,
     star_discrepancy_with, threshold_accepting_lower_bound,
 };

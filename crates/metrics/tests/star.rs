@@ -5,9 +5,9 @@ mod common;
 
 use common::{closed_lattice, coarse, hammersley, random, repeated};
 use lowdisc_metrics::{
-    BoundsOptions, ExactOptions, MetricsError, PointSet, grid_upper_bound, random_box_lower_bound,
-    star_bounds, star_discrepancy, star_discrepancy_1d, star_discrepancy_with,
-    threshold_accepting_lower_bound,
+    BoundsOptions, ExactOptions, MAX_EXACT_DIMS, MetricsError, PointSet, grid_upper_bound,
+    random_box_lower_bound, star_bounds, star_discrepancy, star_discrepancy_1d,
+    star_discrepancy_with, threshold_accepting_lower_bound,
 };
 
 /// Brute force over the critical grid (coordinates and 1 on every axis), counting open
@@ -245,4 +245,21 @@ fn bounds_are_deterministic_and_named() {
     let b = star_bounds(&wide, &opts).unwrap();
     assert_eq!(b.upper, 1.0);
     assert!(b.upper_method.starts_with("trivial") && b.lower > 0.0 && b.lower <= 1.0);
+}
+
+#[test]
+fn many_dimensions_are_computed_up_to_the_limit_and_refused_beyond_it() {
+    // Two coincident points at c in every coordinate: the worst box is open
+    // with one side at c and the others at 1 (volume c, no point inside),
+    // so D* = max(c, 1 - c^d) = c.
+    let c = 0.9999;
+    let at = |d: usize| PointSet::new(d, vec![c; 2 * d]).unwrap();
+    let v = star_discrepancy(&at(MAX_EXACT_DIMS)).unwrap();
+    assert_close(v, c, "coincident points");
+    let err = star_discrepancy(&at(MAX_EXACT_DIMS + 1)).unwrap_err();
+    assert!(matches!(err, MetricsError::TooManyDims { .. }), "{err}");
+    assert!(err.to_string().contains("star_bounds"), "{err}");
+    // The 30,000-column single point of a user's file is refused, not a crash.
+    let wide = PointSet::new(30_000, vec![0.5; 30_000]).unwrap();
+    assert!(star_discrepancy(&wide).is_err());
 }

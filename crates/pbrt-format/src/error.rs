@@ -93,7 +93,7 @@ impl ParseError {
         ParseError {
             kind,
             loc: Some(loc.clone()),
-            message: message.into(),
+            message: bounded(message.into()),
         }
     }
 
@@ -102,7 +102,7 @@ impl ParseError {
         ParseError {
             kind,
             loc: None,
-            message: message.into(),
+            message: bounded(message.into()),
         }
     }
 
@@ -110,6 +110,25 @@ impl ParseError {
     pub fn scene(loc: &Loc, message: impl Into<String>) -> Self {
         Self::new(ErrorKind::Scene, loc, message)
     }
+}
+
+/// The longest message kept whole, in bytes.
+const MAX_MESSAGE: usize = 600;
+
+/// `message`, cut after about [`MAX_MESSAGE`] bytes when longer (a huge
+/// token echoed from a hostile file must not make a huge error line).
+fn bounded(mut message: String) -> String {
+    if message.len() <= MAX_MESSAGE {
+        return message;
+    }
+    let total = message.len();
+    let mut cut = MAX_MESSAGE;
+    while !message.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    message.truncate(cut);
+    message.push_str(&format!("... [{} more bytes]", total - cut));
+    message
 }
 
 impl fmt::Display for ParseError {

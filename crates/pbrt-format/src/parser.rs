@@ -98,8 +98,13 @@ pub fn parse_str<T: ParserTarget + ?Sized>(
     parse_main(source, Path::new(name), target)
 }
 
+/// Reads a scene file: a regular file only (a directory or a device such as
+/// `/dev/zero` is refused by name) of at most [`lowdisc_files::MAX_INPUT_BYTES`].
 fn read_text(path: &Path) -> std::io::Result<String> {
-    let bytes = std::fs::read(path)?;
+    let bytes = lowdisc_files::read_input(path).map_err(|e| {
+        let source = e.io_error();
+        std::io::Error::new(source.kind(), source.to_string())
+    })?;
     Ok(match String::from_utf8(bytes) {
         Ok(s) => s,
         Err(e) => String::from_utf8_lossy(e.as_bytes()).into_owned(),
@@ -139,6 +144,8 @@ impl<T: ParserTarget + ?Sized> Parser<'_, T> {
     ) -> Result<(), ParseError> {
         self.target.file_begin(path, kind, from)?;
         let file: Arc<str> = path.to_string_lossy().into();
+        // A UTF-8 byte order mark, as some editors write, is not part of the scene.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut s = Stream::new(text, file);
         while let Some(tok) = s.next()? {
             let loc = s.loc(&tok);

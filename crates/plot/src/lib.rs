@@ -84,25 +84,13 @@ impl std::error::Error for Error {
     }
 }
 
-/// Writes `bytes` to `path` through a temporary file in the same directory
-/// that is renamed over `path` once complete (removed again on failure).
+/// Writes `bytes` to `path` atomically (see [`lowdisc_files::write_bytes`]):
+/// `path` holds its old contents or the complete new ones, never a mix.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let io = |source| Error::Io {
+    lowdisc_files::write_bytes(path, bytes).map_err(|e| Error::Io {
         path: path.display().to_string(),
-        source,
-    };
-    let name = path
-        .file_name()
-        .ok_or_else(|| io(std::io::Error::other("not a file name")))?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(format!(".tmp{}", std::process::id()));
-    let tmp = path.with_file_name(tmp_name);
-    let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result.map_err(io)
+        source: std::io::Error::new(e.io_error().kind(), e.io_error().to_string()),
+    })
 }
 
 #[cfg(test)]

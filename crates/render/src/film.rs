@@ -22,6 +22,12 @@ use crate::spectrum::Rgb;
 use lowdisc_image::{ImageError, RgbImage, WriteOptions};
 use std::path::Path;
 
+/// Estimated peak bytes per pixel of a render: the film's `f64` sums (32),
+/// the tiles' copies until they are merged (32), the RGB image (12) and its
+/// encoded file (up to 20); callers multiply it by the resolution to refuse
+/// a film that cannot be allocated, before allocating it.
+pub const PEAK_BYTES_PER_PIXEL: u64 = 96;
+
 /// Why a film could not be built or written.
 #[derive(Clone, Debug, PartialEq)]
 pub enum FilmError {

@@ -293,9 +293,13 @@ pub fn spectrum_samples_to_rgb(samples: &[(f32, f32)], path: &Path) -> Result<Rg
 /// RGB `[r, g, b]` with [`spectrum_samples_to_rgb`].
 pub fn spectrum_file_to_rgb(path: impl AsRef<Path>) -> Result<[f32; 3], SpectrumError> {
     let path = path.as_ref();
-    let text = std::fs::read_to_string(path).map_err(|source| SpectrumError::Io {
+    let bytes = lowdisc_files::read_input(path).map_err(|e| SpectrumError::Io {
         path: path.to_path_buf(),
-        source,
+        source: std::io::Error::new(e.io_error().kind(), e.io_error().to_string()),
+    })?;
+    let text = String::from_utf8(bytes).map_err(|e| SpectrumError::Io {
+        path: path.to_path_buf(),
+        source: std::io::Error::new(std::io::ErrorKind::InvalidData, e.utf8_error()),
     })?;
     let samples = parse_spectrum_text(&text, path)?;
     Ok(spectrum_samples_to_rgb(&samples, path)?.to_array())

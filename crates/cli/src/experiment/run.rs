@@ -172,9 +172,9 @@ fn convergence(
 /// Runs the experiment and writes the report folder.
 pub fn run(config: &ExperimentConfig) -> Result<()> {
     let start = Instant::now();
+    let (mut scene, scene_hash) = load(config)?;
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
-    let (mut scene, scene_hash) = load(config)?;
     let (reference, ref_info) = render_reference(config, &scene, scene_hash, config.ref_spp)?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();

@@ -1,54 +1,29 @@
-//! Atomic file output: write to a temporary file in the destination's folder,
-//! then rename it over the destination only when everything succeeded.
+//! Atomic file output in this crate's error type: the image writers go
+//! through `lowdisc-files` (temporary sibling, fsync, rename), which this
+//! module adapts to [`ImageError`].
 
-use std::fs::{self, File, OpenOptions};
+use std::fs::File;
 use std::io::{BufWriter, Write};
-use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::path::Path;
 
-use crate::error::{ErrorKind, ImageError};
+use crate::error::ImageError;
 
-/// Distinguishes temporary files of concurrent writes within one process.
-static COUNTER: AtomicU64 = AtomicU64::new(0);
-
-/// The temporary path used for writing `path`: a hidden sibling
-/// `.NAME.PID-N.tmp` in the same folder, so the final rename stays on one
-/// file system.
-fn temporary_path(path: &Path) -> Result<PathBuf, ImageError> {
-    let name = path.file_name().ok_or_else(|| {
-        ImageError::new(ErrorKind::InvalidArgument, "output path has no file name").with_path(path)
-    })?;
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let tmp_name = format!(".{}.{}-{n}.tmp", name.to_string_lossy(), std::process::id());
-    Ok(path.with_file_name(tmp_name))
+impl From<lowdisc_files::Error> for ImageError {
+    fn from(err: lowdisc_files::Error) -> Self {
+        ImageError::io(err.io_error()).with_path(err.path())
+    }
 }
 
 /// Writes a file atomically: `write` fills a buffered temporary file next to
-/// `path`; on success the file is flushed and renamed to `path`, on any error
-/// (from `write`, the flush or the rename) the temporary file is removed and
-/// an existing `path` is left as it was. Errors carry `path`.
+/// `path`; on success the file is flushed, fsynced and renamed to `path`, on
+/// any error the temporary file is removed and an existing `path` is left as
+/// it was (see [`lowdisc_files::write_with`]). Errors carry `path`.
 pub fn write_atomically(
     path: impl AsRef<Path>,
     write: impl FnOnce(&mut BufWriter<File>) -> Result<(), ImageError>,
 ) -> Result<(), ImageError> {
     let path = path.as_ref();
-    let tmp = temporary_path(path)?;
-    let file = OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&tmp)
-        .map_err(|e| ImageError::io(&e).with_path(path))?;
-    let mut writer = BufWriter::new(file);
-    let result = write(&mut writer).and_then(|()| {
-        writer.flush().map_err(|e| ImageError::io(&e))?;
-        drop(writer);
-        fs::rename(&tmp, path).map_err(|e| ImageError::io(&e))
-    });
-    if result.is_err() {
-        // Best effort: the file may already be gone; the original error matters.
-        let _ = fs::remove_file(&tmp);
-    }
-    result.map_err(|e| match e.path() {
+    lowdisc_files::write_with(path, write).map_err(|e| match e.path() {
         Some(_) => e,
         None => e.with_path(path),
     })

@@ -146,7 +146,7 @@ pub fn read_image_with(
     options: &ReadOptions,
 ) -> Result<RgbImage, ImageError> {
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|e| ImageError::io(&e).with_path(path))?;
+    let bytes = lowdisc_files::read_input(path)?;
     let format = ImageFormat::detect(path, &bytes)?;
     decode_image(&bytes, format, options).map_err(|e| e.with_path(path))
 }

@@ -37,6 +37,12 @@ pub use upper::{BoundsOptions, StarBounds, grid_upper_bound, star_bounds};
 
 use crate::{MetricsError, PointSet, Result};
 
+/// The most dimensions the exact star discrepancy accepts: its recursion
+/// takes one stack level per dimension (a few hundred bytes each), so this
+/// bound keeps it well inside a 2 MiB thread stack. Above it the work guard
+/// alone would let a few points in thousands of dimensions overflow the stack.
+pub const MAX_EXACT_DIMS: usize = 1000;
+
 /// Options of the exact star discrepancy.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ExactOptions {
@@ -74,11 +80,18 @@ pub fn star_discrepancy(points: &PointSet) -> Result<f64> {
 ///
 /// Dispatches on the dimension: closed form for d = 1, the O(N^{3/2}) sweep for d = 2,
 /// the guarded recursion for d ≥ 3. Errors with [`MetricsError::TooExpensive`] when
-/// `estimated_work(n, d) > options.max_work`.
+/// `estimated_work(n, d) > options.max_work`, and with [`MetricsError::TooManyDims`]
+/// above [`MAX_EXACT_DIMS`] dimensions.
 pub fn star_discrepancy_with(points: &PointSet, options: &ExactOptions) -> Result<f64> {
     let (n, d) = (points.len(), points.dims());
     if d == 1 {
         return Ok(star_discrepancy_1d(points.coords()));
+    }
+    if d > MAX_EXACT_DIMS {
+        return Err(MetricsError::TooManyDims {
+            dims: d,
+            limit: MAX_EXACT_DIMS,
+        });
     }
     let work = estimated_work(n, d);
     // A NaN limit refuses too.

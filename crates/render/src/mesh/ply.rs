@@ -135,9 +135,9 @@ fn err(path: &Path, message: impl Into<String>) -> Error {
 /// Reads a PLY file into object-space mesh data.
 pub fn read_ply(path: impl AsRef<Path>) -> Result<MeshData, Error> {
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|source| Error::Io {
+    let bytes = lowdisc_files::read_input(path).map_err(|e| Error::Io {
         path: PathBuf::from(path),
-        source,
+        source: std::io::Error::new(e.io_error().kind(), e.io_error().to_string()),
     })?;
     parse_ply(&bytes, path)
 }

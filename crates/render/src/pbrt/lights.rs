@@ -61,14 +61,13 @@ impl PbrtLoader {
                 Some(o)
             }
             (None, Some(f)) => {
-                if !f.is_file() {
-                    return Err(ParseError::scene(
-                        loc,
-                        format!(
-                            "environment map {} not found (use --envmap FILE to replace it)",
-                            f.display()
-                        ),
-                    ));
+                if let Err(e) = lowdisc_files::check_input(&f, u64::MAX) {
+                    let why = e.io_error();
+                    let msg = format!(
+                        "environment map {}: {why} (--envmap FILE replaces it)",
+                        f.display()
+                    );
+                    return Err(ParseError::scene(loc, msg));
                 }
                 Some(f)
             }

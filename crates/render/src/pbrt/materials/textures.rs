@@ -95,10 +95,11 @@ impl PbrtLoader {
         let mapping = self.texture_mapping(ps, loc);
         let scale = ps.float_or("scale", 1.0) as f32;
         let invert = ps.bool_or("invert", false);
-        if !path.is_file() {
+        if let Err(e) = lowdisc_files::check_input(&path, u64::MAX) {
+            let why = e.io_error();
             self.warn(
                 loc,
-                format!("imagemap: {} not found; using grey 0.5", path.display()),
+                format!("imagemap: {}: {why}; using grey 0.5", path.display()),
             );
             return Ok(None);
         }
