@@ -10,12 +10,12 @@ use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_image::{
     Normalization, PixelError, RgbImage, crop, upscale_nearest, write_exr, write_png,
 };
-use lowdisc_plot::{LineChart, ScatterGrid, Series};
+use lowdisc_plot::{LineChart, Series};
 use serde_json::json;
 
-use super::results::{Images, Results, SamplerResult};
-use super::stats::MeanSd;
-use super::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::results::{Images, Results, SamplerResult};
+use crate::stats::MeanSd;
 
 /// Nearest-neighbour magnification of the crops.
 const CROP_ZOOM: usize = 4;
@@ -102,33 +102,27 @@ fn plots(config: &ExperimentConfig, results: &Results) -> Result<()> {
             .map(|p| [p.threshold, p.star_discrepancy])
             .collect(),
     );
-    crate::compose::grid(vec![vec![error, disc]]).save(config.out.join("threshold_sweep.png"))?;
+    lowdisc_plot::compose::grid(vec![vec![error, disc]])
+        .save(config.out.join("threshold_sweep.png"))?;
     // The paper's figure: 2x2 pixels, `spp` samples each.
-    let mut panels = Vec::new();
-    for name in [
+    let panels: Vec<SamplerConfig> = [
         SamplerName::Sobol,
         SamplerName::Paper,
         SamplerName::PaperRepro,
         SamplerName::ZSobol,
-    ] {
+    ]
+    .into_iter()
+    .map(|name| {
         let mut c = SamplerConfig::new(name);
         c.spp = config.spp;
         c.resolution = [2, 2];
         c.threshold = config.threshold;
         c.paper_all_dims = true;
-        let pos = crate::figure::film_positions(&c)?;
-        panels.push(crate::plots::film_panel(
-            crate::plots::sampler_title(&c),
-            pos,
-            [0, 0],
-            [2, 2],
-            c.spp,
-        ));
-    }
-    let mut grid = ScatterGrid::row(panels);
-    grid.panel_size = 260.0;
-    grid.title = Some(format!("2x2 pixels, {} samples per pixel", config.spp));
-    grid.to_canvas().save(config.out.join("figure.png"))?;
+        c
+    })
+    .collect();
+    let title = format!("2x2 pixels, {} samples per pixel", config.spp);
+    crate::figure::figure(&panels, 260.0, title)?.save(config.out.join("figure.png"))?;
     Ok(())
 }
 
@@ -306,7 +300,7 @@ fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<Strin
     let names: Vec<&str> = config.samplers.iter().map(|s| s.as_str()).collect();
     let value = json!({
         "schema": 1,
-        "command": std::env::args().collect::<Vec<_>>(),
+        "command": config.command,
         "version": env!("CARGO_PKG_VERSION"),
         "git_hash": git_hash(),
         "machine": {
