@@ -39,7 +39,7 @@ use std::path::Path;
 pub use axis::{Axis, Frame};
 pub use canvas::{Anchor, Canvas, Face, Format, Raster, Shape, Stroke, TextStyle};
 pub use color::{Color, ColorMap};
-pub use heatmap::Heatmap;
+pub use heatmap::{Heatmap, quantile};
 pub use line::{LineChart, Series};
 pub use raster::text_width;
 pub use scatter::{ScatterGrid, ScatterPanel};
