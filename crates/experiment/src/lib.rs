@@ -12,6 +12,7 @@
 //! - [`reference`]: the converged reference render, cached on disk;
 //! - [`run`](mod@run): the repeated renders of every sampler and their convergence series;
 //! - [`sweep`]: the threshold sweep of the paper's method;
+//! - [`metrics`]: the error metrics of one render and their summary over runs;
 //! - [`stats`]: mean and sd, ratios, log-log slopes, the cache key's hash;
 //! - [`results`]: the numbers measured, as `results.json` holds them;
 //! - [`figure`]: the 2x2-pixel point figure's film positions and panels;
@@ -54,6 +55,7 @@
 
 pub mod config;
 pub mod figure;
+pub mod metrics;
 pub mod progress;
 pub mod reference;
 pub mod report;

@@ -4,9 +4,10 @@
 
 use std::path::PathBuf;
 
-use lowdisc_image::{ErrorStats, RgbImage};
+use lowdisc_image::RgbImage;
 use serde::Serialize;
 
+use crate::metrics::{ErrorStats, MetricSummary};
 use crate::stats::{MeanSd, ratio};
 
 /// One render's numbers.
@@ -20,32 +21,6 @@ pub struct RunResult {
     pub linear: ErrorStats,
     /// Errors on 8-bit sRGB.
     pub srgb8: ErrorStats,
-}
-
-/// Mean and sd of the four metrics.
-#[derive(Debug, Clone, Serialize)]
-pub struct MetricSummary {
-    /// MSE.
-    pub mse: MeanSd,
-    /// relMSE.
-    pub relmse: MeanSd,
-    /// RMSE.
-    pub rmse: MeanSd,
-    /// MAE.
-    pub mae: MeanSd,
-}
-
-impl MetricSummary {
-    /// Aggregates one metric family over runs.
-    pub fn of(stats: &[ErrorStats]) -> MetricSummary {
-        let col = |f: fn(&ErrorStats) -> f64| MeanSd::of(&stats.iter().map(f).collect::<Vec<_>>());
-        MetricSummary {
-            mse: col(|s| s.mse),
-            relmse: col(|s| s.relmse),
-            rmse: col(|s| s.rmse),
-            mae: col(|s| s.mae),
-        }
-    }
 }
 
 /// One point of a convergence series.
@@ -147,7 +122,6 @@ pub fn fill_ratios(samplers: &mut [SamplerResult]) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lowdisc_image::error_metrics;
 
     fn result(name: &str, relmse: f64) -> SamplerResult {
         let m = MeanSd {
@@ -190,26 +164,5 @@ mod tests {
         let mut w = vec![result("paper", 0.919)];
         fill_ratios(&mut w);
         assert_eq!(w[0].relmse_ratio_to_sobol, None);
-    }
-
-    #[test]
-    fn summary_of_two_hand_computed_runs() {
-        // Test images against a reference of 1s: errors 0.5 and 1.5 in every
-        // channel of a 1x1 image, then 1.0 everywhere.
-        let r = RgbImage::filled(1, 2, [1.0; 3]).unwrap();
-        let a = RgbImage::from_pixels(1, 2, vec![[1.5; 3], [2.5; 3]]).unwrap();
-        let b = RgbImage::filled(1, 2, [2.0; 3]).unwrap();
-        let ea = error_metrics(&a, &r).unwrap().linear;
-        let eb = error_metrics(&b, &r).unwrap().linear;
-        // a: MSE (0.25 + 2.25)/2 = 1.25, MAE 1.0; b: MSE 1, MAE 1.
-        assert!((ea.mse - 1.25).abs() < 1e-12 && (ea.mae - 1.0).abs() < 1e-12);
-        assert!((eb.mse - 1.0).abs() < 1e-12);
-        // relMSE of b: 1 / (1 + 0.01).
-        assert!((eb.relmse - 1.0 / 1.01).abs() < 1e-9);
-        let s = MetricSummary::of(&[ea, eb]);
-        assert!((s.mse.mean - 1.125).abs() < 1e-12);
-        // sd of {1.25, 1}: |1.25 - 1| / sqrt(2).
-        assert!((s.mse.sd - 0.25 / 2f64.sqrt()).abs() < 1e-12);
-        assert!((s.mae.mean - 1.0).abs() < 1e-12 && s.mae.sd.abs() < 1e-12);
     }
 }

@@ -6,18 +6,17 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use lowdisc::catalog::SamplerName;
-use lowdisc_image::{ErrorStats, ImageFormat, ReadOptions, RgbImage, decode_image, error_metrics};
+use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, decode_image};
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{RenderOptions, render};
 use lowdisc_render::scene::Scene;
 
 use crate::config::ExperimentConfig;
+use crate::metrics::{ErrorStats, MetricSummary, measure};
 use crate::progress::{Progress, Stage, samples};
 use crate::reference::reference as render_reference;
-use crate::results::{
-    ConvPoint, Images, MetricSummary, Results, RunResult, SamplerResult, fill_ratios,
-};
+use crate::results::{ConvPoint, Images, Results, RunResult, SamplerResult, fill_ratios};
 use crate::stats::{FNV_OFFSET, MeanSd, fnv1a, log_log_slope};
 use crate::sweep::threshold_sweep;
 use crate::{report, scene};
@@ -106,7 +105,7 @@ fn measure_sampler(
     for seed in 0..u64::from(config.runs) {
         let out = render(scene, &options(config, name, seed, config.spp), stage)?;
         stage.finished_render(out.stats.samples);
-        let m = error_metrics(&out.image, reference)?;
+        let m = measure(&out.image, reference)?;
         runs.push(RunResult {
             seed,
             time_s: out.stats.time.as_secs_f64(),
@@ -156,7 +155,7 @@ fn convergence(
         stage.finished_render(out.stats.samples);
         series.push(ConvPoint {
             spp,
-            relmse: error_metrics(&out.image, reference)?.linear.relmse,
+            relmse: measure(&out.image, reference)?.linear.relmse,
         });
         spp *= 2;
     }

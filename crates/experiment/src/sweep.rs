@@ -7,11 +7,12 @@
 
 use anyhow::Result;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
-use lowdisc_image::{RgbImage, error_metrics};
+use lowdisc_image::RgbImage;
 use lowdisc_render::render::render;
 use lowdisc_render::scene::Scene;
 
 use crate::config::ExperimentConfig;
+use crate::metrics::measure;
 use crate::progress::{Progress, Stage, samples};
 use crate::results::SweepPoint;
 use crate::run::options;
@@ -60,7 +61,7 @@ pub fn threshold_sweep(
             o.threshold = t;
             let rendered = render(scene, &o, &stage)?;
             stage.finished_render(rendered.stats.samples);
-            let m = error_metrics(&rendered.image, reference)?;
+            let m = measure(&rendered.image, reference)?;
             linear.push(m.linear.relmse);
             srgb8.push(m.srgb8.relmse);
         }

@@ -1,64 +1,54 @@
-//! `report.html`: the report's Markdown as an HTML page.
+//! `report.html`: the report's Markdown rendered by `pulldown-cmark`
+//! (CommonMark with pipe tables) inside a page whose style sheet shows
+//! images at the full width of their column (each is a link to its
+//! full-size file) and tables at the page's width.
 
-use std::fmt::Write as _;
+use pulldown_cmark::{Options, Parser, html::push_html};
 
-/// Minimal Markdown-to-HTML for the report's own Markdown (headings,
-/// paragraphs, pipe tables and images).
-pub fn html(md: &str) -> String {
-    let esc = |s: &str| {
-        s.replace('&', "&amp;")
-            .replace('<', "&lt;")
-            .replace('>', "&gt;")
-    };
-    let cell = |c: &str| {
-        let c = c.trim();
-        match c.strip_prefix("![](").and_then(|r| r.strip_suffix(')')) {
-            Some(src) => format!("<img src=\"{}\" style=\"max-width:320px\">", esc(src)),
-            None => esc(c),
-        }
-    };
-    let mut out = String::from(
-        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>lowdisc experiment</title>\
-<style>body{font-family:sans-serif;max-width:1400px;margin:auto}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 6px;font-size:13px}</style></head><body>\n",
-    );
-    let mut in_table = false;
-    for line in md.lines() {
-        if line.starts_with('|') {
-            if line.starts_with("|---") {
-                continue;
-            }
-            let cells: Vec<String> = line.trim_matches('|').split('|').map(cell).collect();
-            if !in_table {
-                out.push_str("<table>\n<tr>");
-                cells.iter().for_each(|c| {
-                    let _ = write!(out, "<th>{c}</th>");
-                });
-                out.push_str("</tr>\n");
-                in_table = true;
-            } else {
-                out.push_str("<tr>");
-                cells.iter().for_each(|c| {
-                    let _ = write!(out, "<td>{c}</td>");
-                });
-                out.push_str("</tr>\n");
-            }
-            continue;
-        }
-        if in_table {
-            out.push_str("</table>\n");
-            in_table = false;
-        }
-        if let Some(t) = line.strip_prefix("## ") {
-            let _ = writeln!(out, "<h2>{}</h2>", esc(t));
-        } else if let Some(t) = line.strip_prefix("# ") {
-            let _ = writeln!(out, "<h1>{}</h1>", esc(t));
-        } else if !line.is_empty() {
-            let _ = writeln!(out, "<p>{}</p>", cell(line));
-        }
-    }
-    if in_table {
-        out.push_str("</table>\n");
-    }
+/// The page's head: title and style sheet.
+const HEAD: &str = "<!DOCTYPE html>
+<html lang=\"en\"><head><meta charset=\"utf-8\">
+<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">
+<title>lowdisc experiment</title>
+<style>
+body{font-family:sans-serif;max-width:1600px;margin:auto;padding:0 1em;line-height:1.4}
+img{max-width:100%;height:auto;image-rendering:pixelated}
+table{border-collapse:collapse;margin:0.5em 0}
+td,th{border:1px solid #ccc;padding:3px 6px;font-size:13px;vertical-align:top}
+th{background:#f3f3f3}
+td img{width:100%;min-width:120px}
+code{background:#f3f3f3;padding:0 3px}
+</style></head><body>
+";
+
+/// The HTML page of `markdown`.
+pub fn html(markdown: &str) -> String {
+    let mut out = String::from(HEAD);
+    push_html(&mut out, Parser::new_ext(markdown, Options::ENABLE_TABLES));
     out.push_str("</body></html>\n");
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tables_code_and_linked_images_become_html() {
+        let md =
+            "# T\n\nUse `sobol` & 1 < 2.\n\n| a | b |\n|---|---|\n| [![x](x.png)](x.png) | 1 |\n";
+        let page = html(md);
+        assert!(page.contains("<h1>T</h1>"), "{page}");
+        assert!(
+            page.contains("<code>sobol</code> &amp; 1 &lt; 2."),
+            "{page}"
+        );
+        assert!(page.contains("<table>"), "{page}");
+        assert!(
+            page.contains("<a href=\"x.png\"><img src=\"x.png\" alt=\"x\" /></a>"),
+            "{page}"
+        );
+        assert!(!page.contains('`') && !page.contains("|---"), "{page}");
+        assert!(page.ends_with("</body></html>\n"));
+    }
 }

@@ -7,6 +7,11 @@ use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::results::Results;
 use crate::stats::MeanSd;
 
+/// An image linked to its full-size file.
+fn image(alt: &str, file: &str) -> String {
+    format!("[![{alt}]({file})]({file})")
+}
+
 fn ms(m: MeanSd) -> String {
     format!("{:.4e} ± {:.1e}", m.mean, m.sd)
 }
@@ -85,19 +90,33 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
     );
     md.push_str(&table(results));
     md.push_str("\n## Images\n\nEach render is the seed-0 run; the crop is the central quarter magnified 4x; the heatmap is the per-pixel relative squared error (viridis, scaled to its 99th percentile).\n\n| sampler | render | crop | relative squared error |\n|---|---|---|---|\n");
-    md.push_str("| reference | ![](reference.png) | ![](reference_crop.png) | |\n");
+    let _ = writeln!(
+        md,
+        "| reference | {} | {} | |",
+        image("reference", "reference.png"),
+        image("reference crop", "reference_crop.png")
+    );
     for s in &results.samplers {
         let n = &s.name;
         let _ = writeln!(
             md,
-            "| {n} | ![]({n}.png) | ![]({n}_crop.png) | ![]({n}_relse.png) |"
+            "| {n} | {} | {} | {} |",
+            image(n, &format!("{n}.png")),
+            image(&format!("{n} crop"), &format!("{n}_crop.png")),
+            image(&format!("{n} error"), &format!("{n}_relse.png"))
         );
     }
-    md.push_str("\n## Convergence\n\n![](convergence.png)\n\n## Threshold sweep (paper's method)\n\n\
+    let _ = write!(
+        md,
+        "\n## Convergence\n\n{}\n",
+        image("convergence", "convergence.png")
+    );
+    md.push_str("\n## Threshold sweep (paper's method)\n\n\
 `paper-repro` rendered at each threshold (the probability that a generator-matrix column is left unflipped; \
 1 is plain Sobol), mean ± sd over the runs' seeds, and the star discrepancy of one pixel's film positions \
-(dimensions 0-1, permuted too).\n\n\
-![](threshold_sweep.png)\n\n| threshold | relMSE (linear) | relMSE (sRGB8) | star discrepancy |\n|---|---|---|---|\n");
+(dimensions 0-1, permuted too).\n\n");
+    md.push_str(&image("threshold sweep", "threshold_sweep.png"));
+    md.push_str("\n\n| threshold | relMSE (linear) | relMSE (sRGB8) | star discrepancy |\n|---|---|---|---|\n");
     for p in &results.threshold_sweep {
         let _ = writeln!(
             md,
@@ -108,7 +127,12 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
             p.star_discrepancy
         );
     }
-    md.push_str("\n## The paper's figure\n\n![](figure.png)\n\n## results.json\n\n\
+    let _ = write!(
+        md,
+        "\n## The paper's figure\n\n{}\n",
+        image("figure", "figure.png")
+    );
+    md.push_str("\n## results.json\n\n\
 `{schema, command, version, git_hash, machine: {cpu, cores}, settings, reference: {file, cached, time_s}, \
 convergence_reference: {file, cached, time_s}, \
 samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, srgb8: {mse, relmse, rmse, mae}, \
