@@ -19,6 +19,7 @@ use serde::Serialize;
 
 use lowdisc_experiment::figure::sampler_title;
 
+use crate::progress::Reporter;
 use crate::{claim_report, parse, pointfile};
 
 /// The long help of `paper-claim`.
@@ -61,6 +62,9 @@ pub struct ClaimArgs {
     /// Plot format: png or svg.
     #[arg(long, value_name = "EXT", default_value = "png")]
     plot_format: String,
+    /// No progress on stderr.
+    #[arg(long, short = 'q')]
+    quiet: bool,
 }
 
 /// A validated `paper-claim` invocation.
@@ -78,6 +82,8 @@ pub struct ClaimConfig {
     pub samplers: Vec<SamplerConfig>,
     /// Plot file extension.
     pub plot_format: String,
+    /// No progress on stderr.
+    pub quiet: bool,
 }
 
 /// The largest point count accepted.
@@ -146,6 +152,7 @@ impl ClaimArgs {
             pairs,
             samplers,
             plot_format: self.plot_format,
+            quiet: self.quiet,
         })
     }
 }
@@ -198,17 +205,34 @@ pub struct ClaimRow {
     pub min_toroidal: Stat,
 }
 
-/// Measures every cell (sampler, pair, n).
-pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
+/// The seeds measured for `sampler`: one run for unscrambled Sobol.
+fn runs_of(config: &ClaimConfig, sampler: &SamplerConfig) -> u64 {
+    if sampler.name == SamplerName::Sobol {
+        1
+    } else {
+        config.seeds
+    }
+}
+
+/// Measures every cell (sampler, pair, n), counting the points measured on
+/// `progress`.
+pub fn measure(config: &ClaimConfig, progress: &Reporter) -> Result<Vec<ClaimRow>> {
+    let points_per_pair: u64 = config
+        .samplers
+        .iter()
+        .map(|s| runs_of(config, s) * config.ns.iter().map(|&n| u64::from(n)).sum::<u64>())
+        .sum();
+    let cells = config.pairs.len() * config.samplers.len() * config.ns.len();
+    progress.begin_stage(
+        &format!("paper-claim: {cells} cells"),
+        points_per_pair * config.pairs.len() as u64,
+        "points",
+    );
     let mut rows = Vec::new();
     for pair in &config.pairs {
         for sampler in &config.samplers {
             let is_paper = matches!(sampler.name, SamplerName::Paper | SamplerName::PaperRepro);
-            let runs = if sampler.name == SamplerName::Sobol {
-                1
-            } else {
-                config.seeds
-            };
+            let runs = runs_of(config, sampler);
             for &n in &config.ns {
                 let (mut star, mut euc, mut tor) = (Vec::new(), Vec::new(), Vec::new());
                 for seed in 0..runs {
@@ -218,6 +242,7 @@ pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
                     star.push(star_discrepancy(&points)?);
                     euc.push(min_distance(&points, DistanceMetric::Euclidean)?);
                     tor.push(min_distance(&points, DistanceMetric::Toroidal)?);
+                    progress.add(u64::from(n));
                 }
                 rows.push(ClaimRow {
                     label: sampler_title(sampler),
@@ -239,7 +264,9 @@ pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
 /// Runs `paper-claim`: measures, writes the report files, prints their names.
 pub fn run(config: &ClaimConfig, mut out: impl Write) -> Result<()> {
     let start = Instant::now();
-    let rows = measure(config)?;
+    let progress = Reporter::new(config.quiet);
+    let rows = measure(config, &progress)?;
+    progress.end_stage();
     let seconds = start.elapsed().as_secs_f64();
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;

@@ -14,6 +14,7 @@ use lowdisc_metrics::PointSet;
 use serde::Serialize;
 
 use crate::metric_rows::{self, MetricRow};
+use crate::progress::Reporter;
 use crate::{parse, pointfile};
 
 /// Which metric to compute.
@@ -97,6 +98,9 @@ pub struct DiscrepancyArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     json: bool,
+    /// No progress on stderr (shown for sets of 20000 points or more).
+    #[arg(long, short = 'q')]
+    quiet: bool,
 }
 
 /// Where the points come from.
@@ -122,7 +126,11 @@ pub struct DiscrepancyConfig {
     metric: Metric,
     options: metric_rows::Options,
     json: bool,
+    quiet: bool,
 }
+
+/// Point sets at least this large show their progress on stderr.
+const LARGE: usize = 20_000;
 
 impl DiscrepancyArgs {
     /// Checks every option and builds the configuration.
@@ -157,6 +165,7 @@ impl DiscrepancyArgs {
                 max_work: self.max_work,
             },
             json: self.json,
+            quiet: self.quiet,
         })
     }
 }
@@ -173,7 +182,18 @@ struct Report<'a> {
 /// Runs `discrepancy`, printing to `out`.
 pub fn run(config: &DiscrepancyConfig, mut out: impl Write) -> Result<()> {
     let (points, source) = load(&config.source)?;
-    let rows = metric_rows::compute(&points, config.metric, &config.options)?;
+    let progress = Reporter::new(config.quiet || points.len() < LARGE);
+    progress.begin_stage(
+        &format!(
+            "discrepancy of {} points in {} dimensions",
+            points.len(),
+            points.dims()
+        ),
+        metric_rows::computations(config.metric),
+        "metrics",
+    );
+    let rows = metric_rows::compute(&points, config.metric, &config.options, &progress)?;
+    progress.end_stage();
     if config.json {
         let report = Report {
             source,

@@ -11,9 +11,10 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::Args;
 use lowdisc::catalog::SamplerConfig;
-use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig, Progress, Silent};
+use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig};
 
 use crate::parse;
+use crate::progress::Reporter;
 
 /// The long help of `experiment`.
 pub const LONG_ABOUT: &str = "\
@@ -168,20 +169,10 @@ pub struct Experiment {
     quiet: bool,
 }
 
-/// Prints the stages and messages of a run on stderr, one line each.
-struct Lines;
-
-impl Progress for Lines {
-    fn note(&self, message: &str) {
-        eprintln!("{message}");
-    }
-    fn begin(&self, name: &str, _total: u64) {
-        eprintln!("{name}");
-    }
-}
-
-/// Runs the experiment, printing its progress unless `--quiet`.
+/// Runs the experiment, printing its progress and a summary unless `--quiet`.
 pub fn run(experiment: &Experiment) -> Result<()> {
-    let observer: &dyn Progress = if experiment.quiet { &Silent } else { &Lines };
-    lowdisc_experiment::run(&experiment.config, observer)
+    let reporter = Reporter::new(experiment.quiet);
+    let outcome = lowdisc_experiment::run(&experiment.config, &reporter)?;
+    reporter.summary(&outcome.files);
+    Ok(())
 }

@@ -21,6 +21,7 @@ mod parse;
 mod plots;
 mod pointfile;
 mod points;
+mod progress;
 mod render_cmd;
 mod spectrum;
 

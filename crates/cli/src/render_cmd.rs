@@ -3,19 +3,18 @@
 //!
 //! Arguments become a validated [`RenderConfig`] before any work starts; the
 //! render itself runs in the `lowdisc-render` library, which reports progress
-//! through a callback that drives an `indicatif` bar here (only when stderr is
-//! a terminal, and never with `--quiet`). Warnings go to stderr, each distinct
+//! through a callback that drives [`crate::progress::Reporter`] (a bar on a
+//! terminal, lines otherwise, nothing with `--quiet`), which also says where
+//! the image went. Warnings go to stderr, each distinct
 //! one once (also suppressed by `--quiet`); `--stats` prints the counters and
 //! the time per phase to stdout. A scene file's own settings (sampler, spp,
 //! maxdepth, resolution, output file) apply unless a flag overrides them.
 
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
-use indicatif::{ProgressBar, ProgressStyle};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
@@ -25,6 +24,7 @@ use lowdisc_render::scene::Scene;
 use std::collections::HashSet;
 
 use crate::parse;
+use crate::progress::Reporter;
 
 /// The largest image side `--res` accepts.
 pub const MAX_SIDE: u32 = 16_384;
@@ -319,23 +319,19 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         ..Phases::default()
     };
 
-    let bar = progress_bar(config);
-    let on_progress = |p: Progress| {
-        if let Some(bar) = &bar {
-            bar.set_length(p.samples_total);
-            bar.set_position(p.samples_done);
-            let secs = bar.elapsed().as_secs_f64();
-            if secs > 0.0 {
-                bar.set_message(format!("{:.2} Mrays/s", p.rays as f64 / secs / 1e6));
-            }
-        }
-    };
+    let reporter = Reporter::new(config.quiet);
+    let [w, h] = scene.film().params.resolution;
+    let total = u64::from(w) * u64::from(h) * u64::from(options.spp);
+    let title = format!(
+        "rendering {w}x{h}, {} spp with {}",
+        options.spp, options.sampler
+    );
+    reporter.begin_stage(&title, total, "samples");
+    let on_progress = |p: Progress| reporter.advance_stage(p.samples_done);
     let t1 = Instant::now();
     let out = render(&scene, &options, &on_progress)?;
     phases.render = t1.elapsed();
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
+    reporter.end_stage();
     for w in &out.warnings {
         warn_once(&mut seen, config.quiet, w);
     }
@@ -344,21 +340,11 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         .write(&output, scene.film().exposure)
         .with_context(|| format!("cannot write `{}`", output.display()))?;
     phases.write = t2.elapsed();
+    reporter.line(&format!("wrote {}", output.display()));
     if config.stats {
         print_stats(&scene, &out, &phases);
     }
     Ok(())
-}
-
-fn progress_bar(config: &RenderConfig) -> Option<ProgressBar> {
-    if config.quiet || !std::io::stderr().is_terminal() {
-        return None;
-    }
-    let bar = ProgressBar::new(1);
-    let style = ProgressStyle::with_template("{bar:40} {percent:>3}% {msg} ETA {eta}")
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
-    bar.set_style(style);
-    Some(bar)
 }
 
 fn print_stats(scene: &Scene, out: &lowdisc_render::render::RenderOutput, phases: &Phases) {

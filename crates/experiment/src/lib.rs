@@ -9,6 +9,7 @@
 //! Modules, in the order a run uses them:
 //! - [`config`]: the validated settings of one experiment;
 //! - [`scene`]: the built-in scene and its procedural sky;
+//! - [`plan`]: the samples a run will render and the estimate of its time;
 //! - [`reference`]: the converged reference render, cached on disk;
 //! - [`run`](mod@run): the repeated renders of every sampler and their convergence series;
 //! - [`sweep`]: the threshold sweep of the paper's method;
@@ -56,6 +57,7 @@
 pub mod config;
 pub mod figure;
 pub mod metrics;
+pub mod plan;
 pub mod progress;
 pub mod reference;
 pub mod report;
@@ -66,5 +68,6 @@ pub mod stats;
 pub mod sweep;
 
 pub use config::{DEFAULT_SAMPLERS, ExperimentConfig, REF_SAMPLER, REF_SEED};
+pub use plan::Estimate;
 pub use progress::{Progress, Silent};
-pub use run::run;
+pub use run::{Outcome, run};

@@ -3,7 +3,7 @@
 //! never prints), and [`Stage`], which turns the renderer's per-render
 //! reports into one count of camera samples per stage.
 //!
-//! A run is a sequence of stages (the reference, each sampler's runs, the
+//! A run first reports its [`Estimate`], then a sequence of stages (the reference, each sampler's runs, the
 //! threshold sweep, the convergence series). Each stage announces its total
 //! number of camera samples with [`Progress::begin`], reports the samples
 //! finished so far with [`Progress::advance`] (called from render worker
@@ -13,11 +13,18 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use lowdisc_render::render::{self, ProgressSink};
 
+use crate::plan::Estimate;
+
 /// Receives a run's progress; every method does nothing by default.
 pub trait Progress: Sync {
     /// A one-line message (scene warnings, a reused cache file).
     fn note(&self, message: &str) {
         let _ = message;
+    }
+    /// The run's estimated work and time, from a calibration render, before
+    /// the first stage.
+    fn estimate(&self, estimate: &Estimate) {
+        let _ = estimate;
     }
     /// A stage named `name` of `total` camera samples begins.
     fn begin(&self, name: &str, total: u64) {

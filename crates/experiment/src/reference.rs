@@ -24,18 +24,8 @@ pub fn reference(
     observer: &dyn Progress,
 ) -> Result<(RgbImage, ReferenceInfo)> {
     let resolution = scene.film().params.resolution;
-    let key = format!(
-        "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
-        resolution,
-        spp,
-        REF_SAMPLER.as_str(),
-        REF_SEED,
-        config.max_depth,
-        env!("CARGO_PKG_VERSION")
-    );
-    let hash = fnv1a(FNV_OFFSET, key.as_bytes());
+    let file = cache_file(config, resolution, scene_hash, spp);
     let dir = cache_dir(&config.out);
-    let file = dir.join(format!("ref-{hash:016x}.pfm"));
     if file.is_file() {
         if let Ok(image) = lowdisc_image::read_image(&file) {
             observer.note(&format!("reusing cached reference {}", file.display()));
@@ -71,6 +61,27 @@ pub fn reference(
             time_s: out.stats.time.as_secs_f64(),
         },
     ))
+}
+
+/// The cache file of the reference at `resolution` with `spp` samples of
+/// the scene whose content hashes to `scene_hash`.
+pub fn cache_file(
+    config: &ExperimentConfig,
+    resolution: [u32; 2],
+    scene_hash: u64,
+    spp: u32,
+) -> PathBuf {
+    let key = format!(
+        "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
+        resolution,
+        spp,
+        REF_SAMPLER.as_str(),
+        REF_SEED,
+        config.max_depth,
+        env!("CARGO_PKG_VERSION")
+    );
+    let hash = fnv1a(FNV_OFFSET, key.as_bytes());
+    cache_dir(&config.out).join(format!("ref-{hash:016x}.pfm"))
 }
 
 /// `<parent of out>/lowdisc-ref-cache`.

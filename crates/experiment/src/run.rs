@@ -2,6 +2,7 @@
 //! and their convergence series, collected with the reference and the
 //! threshold sweep into [`Results`] and handed to [`crate::report`].
 
+use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
@@ -14,8 +15,9 @@ use lowdisc_render::scene::Scene;
 
 use crate::config::ExperimentConfig;
 use crate::metrics::{ErrorStats, MetricSummary, measure};
+use crate::plan::{calibrate, total_samples};
 use crate::progress::{Progress, Stage, samples};
-use crate::reference::reference as render_reference;
+use crate::reference::{cache_file, reference as render_reference};
 use crate::results::{ConvPoint, Images, Results, RunResult, SamplerResult, fill_ratios};
 use crate::stats::{FNV_OFFSET, MeanSd, fnv1a, log_log_slope};
 use crate::sweep::threshold_sweep;
@@ -166,14 +168,29 @@ fn convergence(
     Ok((series, log_log_slope(&pts)))
 }
 
+/// What a finished run leaves behind.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// Every file written to the report folder, then the reference files.
+    pub files: Vec<PathBuf>,
+    /// Wall time of the whole run, seconds.
+    pub seconds: f64,
+}
+
 /// Runs the experiment and writes the report folder, telling `observer`
 /// what it does.
-pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<()> {
+pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<Outcome> {
     config.validate()?;
     let start = Instant::now();
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
     let (mut scene, scene_hash) = load(config, observer)?;
+    let cached = [
+        (config.resolution, config.ref_spp),
+        (config.conv_res, config.conv_ref_spp),
+    ]
+    .map(|(res, spp)| cache_file(config, res, scene_hash, spp).is_file());
+    observer.estimate(&calibrate(config, &scene, total_samples(config, cached))?);
     let (reference, ref_info) =
         render_reference(config, &scene, scene_hash, config.ref_spp, observer)?;
     let mut samplers = Vec::new();
@@ -228,10 +245,17 @@ pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<()> {
         threshold_sweep,
     };
     let images = Images { reference, renders };
-    report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
+    let mut files = report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
+    files.push(results.reference.file.clone());
+    if !same {
+        files.push(results.convergence_reference.file.clone());
+    }
     observer.note(&format!(
         "report written to {}",
         config.out.join("report.md").display()
     ));
-    Ok(())
+    Ok(Outcome {
+        files,
+        seconds: start.elapsed().as_secs_f64(),
+    })
 }

@@ -1,6 +1,8 @@
 //! The report's charts: the convergence plot, the threshold sweep and the
 //! paper's 2x2-pixel point figure.
 
+use std::path::PathBuf;
+
 use anyhow::Result;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_plot::{LineChart, Series};
@@ -8,8 +10,11 @@ use lowdisc_plot::{LineChart, Series};
 use crate::config::ExperimentConfig;
 use crate::results::Results;
 
-/// Writes `convergence.png`, `threshold_sweep.png` and `figure.png`.
-pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<()> {
+/// Writes `convergence.png`, `threshold_sweep.png` and `figure.png` and
+/// returns their paths.
+pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<[PathBuf; 3]> {
+    let files =
+        ["convergence.png", "threshold_sweep.png", "figure.png"].map(|f| config.out.join(f));
     let mut chart = LineChart::log_log("relMSE vs samples per pixel", "spp", "relMSE (linear)");
     for s in &results.samplers {
         let pts = s
@@ -22,7 +27,7 @@ pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<()> 
             .map_or("-".into(), |v| format!("{v:.2}"));
         chart = chart.with(Series::new(format!("{} (slope {slope})", s.name), pts));
     }
-    chart.to_canvas().save(config.out.join("convergence.png"))?;
+    chart.to_canvas().save(&files[0])?;
     let sweep_chart = |title: &str, y: &str, name: String, pts: Vec<[f64; 2]>| {
         let mut c = LineChart::log_log(title, "threshold", y);
         c.x_log = false;
@@ -46,8 +51,7 @@ pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<()> 
             .map(|p| [p.threshold, p.star_discrepancy])
             .collect(),
     );
-    lowdisc_plot::compose::grid(vec![vec![error, disc]])
-        .save(config.out.join("threshold_sweep.png"))?;
+    lowdisc_plot::compose::grid(vec![vec![error, disc]]).save(&files[1])?;
     // The paper's figure: 2x2 pixels, `spp` samples each.
     let panels: Vec<SamplerConfig> = [
         SamplerName::Sobol,
@@ -66,6 +70,6 @@ pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<()> 
     })
     .collect();
     let title = format!("2x2 pixels, {} samples per pixel", config.spp);
-    crate::figure::figure(&panels, 260.0, title)?.save(config.out.join("figure.png"))?;
-    Ok(())
+    crate::figure::figure(&panels, 260.0, title)?.save(&files[2])?;
+    Ok(files)
 }

@@ -2,7 +2,7 @@
 //! magnified central crop, and its per-pixel relative-squared-error heatmap
 //! with a colour bar.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use anyhow::Result;
 use lowdisc_image::{
@@ -20,14 +20,18 @@ fn crop_window(w: usize, h: usize) -> [usize; 4] {
     [(w - cw) / 2, (h - ch) / 2, cw, ch]
 }
 
-/// `stem.exr` (linear radiance), `stem.png` (sRGB) and `stem_crop.png`.
-pub fn save_with_crop(dir: &Path, stem: &str, image: &RgbImage) -> Result<()> {
-    write_exr(dir.join(format!("{stem}.exr")), image)?;
-    write_png(dir.join(format!("{stem}.png")), image, 1.0)?;
+/// `stem.exr` (linear radiance), `stem.png` (sRGB) and `stem_crop.png`;
+/// returns the three paths.
+pub fn save_with_crop(dir: &Path, stem: &str, image: &RgbImage) -> Result<[PathBuf; 3]> {
+    let files = ["", "_crop"].map(|s| dir.join(format!("{stem}{s}.png")));
+    let exr = dir.join(format!("{stem}.exr"));
+    write_exr(&exr, image)?;
+    write_png(&files[0], image, 1.0)?;
     let [x, y, w, h] = crop_window(image.width(), image.height());
     let c = upscale_nearest(&crop(image, x, y, w, h)?, CROP_ZOOM)?;
-    write_png(dir.join(format!("{stem}_crop.png")), &c, 1.0)?;
-    Ok(())
+    write_png(&files[1], &c, 1.0)?;
+    let [png, crop_png] = files;
+    Ok([exr, png, crop_png])
 }
 
 /// The quantile of the per-pixel errors that the heatmap's colour bar ends at.
@@ -42,7 +46,7 @@ pub fn save_error_heatmap(
     name: &str,
     image: &RgbImage,
     reference: &RgbImage,
-) -> Result<()> {
+) -> Result<PathBuf> {
     let errors: Vec<f64> = pixel_errors(image, reference, PixelError::RelativeSquared)?
         .into_iter()
         .map(f64::from)
@@ -56,7 +60,7 @@ pub fn save_error_heatmap(
     let mut map = Heatmap::new(format!("{name}: relative squared error"), w, h, errors)?;
     map.range = Some([0.0, top]);
     map.scale = (512 / w).max(1) as f32;
-    map.to_canvas()
-        .save(dir.join(format!("{name}_relse.png")))?;
-    Ok(())
+    let file = dir.join(format!("{name}_relse.png"));
+    map.to_canvas().save(&file)?;
+    Ok(file)
 }

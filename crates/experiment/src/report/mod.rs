@@ -10,7 +10,7 @@ pub mod images;
 pub mod json;
 pub mod markdown;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 
@@ -22,20 +22,26 @@ fn write_text(path: &Path, text: &str) -> Result<()> {
         .with_context(|| format!("cannot write `{}`", path.display()))
 }
 
-/// Writes every file of the report folder.
+/// Writes every file of the report folder and returns their paths.
 pub fn write_all(
     config: &ExperimentConfig,
     results: &Results,
     images: &Images,
     wall: f64,
-) -> Result<()> {
+) -> Result<Vec<PathBuf>> {
     let dir = &config.out;
-    images::save_with_crop(dir, "reference", &images.reference)?;
+    let mut written = Vec::new();
+    written.extend(images::save_with_crop(dir, "reference", &images.reference)?);
     for (s, image) in results.samplers.iter().zip(&images.renders) {
-        images::save_with_crop(dir, &s.name, image)?;
-        images::save_error_heatmap(dir, &s.name, image, &images.reference)?;
+        written.extend(images::save_with_crop(dir, &s.name, image)?);
+        written.push(images::save_error_heatmap(
+            dir,
+            &s.name,
+            image,
+            &images.reference,
+        )?);
     }
-    charts::write_charts(config, results)?;
+    written.extend(charts::write_charts(config, results)?);
     let md = markdown::markdown(config, results, wall);
     write_text(&dir.join("report.md"), &md)?;
     write_text(&dir.join("report.html"), &html::html(&md))?;
@@ -43,5 +49,9 @@ pub fn write_all(
         &dir.join("results.json"),
         &json::json(config, results, wall)?,
     )?;
-    Ok(())
+    let mut files: Vec<PathBuf> = ["report.html", "report.md", "results.json"]
+        .map(|f| dir.join(f))
+        .into();
+    files.append(&mut written);
+    Ok(files)
 }
