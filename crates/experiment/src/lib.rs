@@ -36,7 +36,8 @@
 //!   {file, cached, time_s}, samplers: [{ name, description, deterministic,
 //!   time_s, mse, relmse, rmse, mae (linear, each {mean, sd}),
 //!   srgb8: {mse, relmse, rmse, mae} (each {mean, sd}),
-//!   relmse_ratio_to_sobol (number or null), runs: [{seed, time_s, linear:
+//!   relmse_ratio_to_sobol (number or null), relmse_ratio_interval ([lo, hi]
+//!   or null, approximate 95 %), runs: [{seed, time_s, linear:
 //!   {mse, relmse, rmse, mae}, srgb8: {...}}], convergence: [{spp, relmse}],
 //!   convergence_slope }], threshold_sweep: [{threshold, star_discrepancy,
 //!   relmse, srgb8_relmse}],

@@ -8,7 +8,7 @@ use lowdisc_image::RgbImage;
 use serde::Serialize;
 
 use crate::metrics::{ErrorStats, MetricSummary};
-use crate::stats::{MeanSd, ratio};
+use crate::stats::{MeanSd, ratio, ratio_interval};
 
 /// One render's numbers.
 #[derive(Debug, Clone, Serialize)]
@@ -55,6 +55,9 @@ pub struct SamplerResult {
     pub srgb8: MetricSummary,
     /// Mean linear relMSE over `sobol`'s.
     pub relmse_ratio_to_sobol: Option<f64>,
+    /// Approximate 95 % interval of that ratio ([`crate::stats::ratio_interval`];
+    /// `[1, 1]` for `sobol` itself).
+    pub relmse_ratio_interval: Option<[f64; 2]>,
     /// Every run.
     pub runs: Vec<RunResult>,
     /// relMSE against spp (seed 0).
@@ -108,47 +111,56 @@ pub struct Images {
     pub renders: Vec<RgbImage>,
 }
 
-/// Fills every sampler's `relmse_ratio_to_sobol` from the `sobol` entry.
+/// Fills every sampler's `relmse_ratio_to_sobol` and its interval from the
+/// `sobol` entry.
 pub fn fill_ratios(samplers: &mut [SamplerResult]) {
     let base = samplers
         .iter()
         .find(|s| s.name == "sobol")
-        .map(|s| s.relmse.mean);
+        .map(|s| (s.relmse, s.runs.len()));
     for s in samplers {
-        s.relmse_ratio_to_sobol = ratio(s.relmse.mean, base);
+        s.relmse_ratio_to_sobol = ratio(s.relmse.mean, base.map(|b| b.0.mean));
+        s.relmse_ratio_interval = if s.name == "sobol" {
+            s.relmse_ratio_to_sobol.map(|r| [r, r])
+        } else {
+            base.and_then(|(b, nb)| ratio_interval(s.relmse, s.runs.len(), b, nb))
+        };
+    }
+}
+
+/// A sampler result with every metric `relmse` (sd 0) and no runs, for tests.
+#[cfg(test)]
+pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
+    let m = MeanSd {
+        mean: relmse,
+        sd: 0.0,
+    };
+    SamplerResult {
+        name: name.into(),
+        description: String::new(),
+        deterministic: false,
+        time_s: m,
+        mse: m,
+        relmse: m,
+        rmse: m,
+        mae: m,
+        srgb8: MetricSummary {
+            mse: m,
+            relmse: m,
+            rmse: m,
+            mae: m,
+        },
+        relmse_ratio_to_sobol: None,
+        relmse_ratio_interval: None,
+        runs: Vec::new(),
+        convergence: Vec::new(),
+        convergence_slope: None,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn result(name: &str, relmse: f64) -> SamplerResult {
-        let m = MeanSd {
-            mean: relmse,
-            sd: 0.0,
-        };
-        SamplerResult {
-            name: name.into(),
-            description: String::new(),
-            deterministic: false,
-            time_s: m,
-            mse: m,
-            relmse: m,
-            rmse: m,
-            mae: m,
-            srgb8: MetricSummary {
-                mse: m,
-                relmse: m,
-                rmse: m,
-                mae: m,
-            },
-            relmse_ratio_to_sobol: None,
-            runs: Vec::new(),
-            convergence: Vec::new(),
-            convergence_slope: None,
-        }
-    }
 
     #[test]
     fn ratios_are_to_sobol_and_absent_without_it() {

@@ -134,6 +134,7 @@ fn measure_sampler(
         mae: lin.mae,
         srgb8: MetricSummary::of(&srgb8),
         relmse_ratio_to_sobol: None,
+        relmse_ratio_interval: None,
         runs,
         convergence_slope: None,
         convergence: Vec::new(),

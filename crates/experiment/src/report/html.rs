@@ -1,7 +1,9 @@
 //! `report.html`: the report's Markdown rendered by `pulldown-cmark`
 //! (CommonMark with pipe tables) inside a page whose style sheet shows
-//! images at the full width of their column (each is a link to its
-//! full-size file) and tables at the page's width.
+//! every image at the full width of the page or of its table column (each
+//! is a link to its full-size file); a table of images fills the page in
+//! columns of equal width, so a sampler's render, crop and error heatmap
+//! sit side by side at one size.
 
 use pulldown_cmark::{Options, Parser, html::push_html};
 
@@ -16,7 +18,10 @@ img{max-width:100%;height:auto;image-rendering:pixelated}
 table{border-collapse:collapse;margin:0.5em 0}
 td,th{border:1px solid #ccc;padding:3px 6px;font-size:13px;vertical-align:top}
 th{background:#f3f3f3}
-td img{width:100%;min-width:120px}
+table:has(img){width:100%;table-layout:fixed}
+table:has(img) th:first-child{width:8em}
+td img{width:100%}
+p img{width:100%}
 code{background:#f3f3f3;padding:0 3px}
 </style></head><body>
 ";

@@ -32,6 +32,7 @@ pub fn write_all(
     let dir = &config.out;
     let mut written = Vec::new();
     written.extend(images::save_with_crop(dir, "reference", &images.reference)?);
+    let top = images::common_scale(&images.renders, &images.reference)?;
     for (s, image) in results.samplers.iter().zip(&images.renders) {
         written.extend(images::save_with_crop(dir, &s.name, image)?);
         written.push(images::save_error_heatmap(
@@ -39,10 +40,11 @@ pub fn write_all(
             &s.name,
             image,
             &images.reference,
+            top,
         )?);
     }
     written.extend(charts::write_charts(config, results)?);
-    let md = markdown::markdown(config, results, wall);
+    let md = markdown::markdown(config, results, wall, top);
     write_text(&dir.join("report.md"), &md)?;
     write_text(&dir.join("report.html"), &html::html(&md))?;
     write_text(
