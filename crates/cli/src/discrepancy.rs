@@ -60,7 +60,7 @@ where each result has metric, value (or lower/upper), method and seconds.\n\
 /// The arguments of `discrepancy`.
 #[derive(Debug, Args)]
 pub struct DiscrepancyArgs {
-    /// Sampler name (see `lowdisc points --help`).
+    /// Sampler name (see `lowdisc points --help`) [required unless --input].
     #[arg(
         long,
         short = 's',
@@ -68,7 +68,7 @@ pub struct DiscrepancyArgs {
         required_unless_present = "input"
     )]
     sampler: Option<String>,
-    /// Read the points from FILE instead of a sampler.
+    /// Read the points from FILE instead of a sampler [required unless --sampler].
     #[arg(long, short = 'i', value_name = "FILE", conflicts_with_all = ["sampler", "n", "dims", "dim_range", "threshold"])]
     input: Option<PathBuf>,
     /// Number of points [default: 256].

@@ -38,28 +38,31 @@ pub struct ExperimentArgs {
     /// Samplers to compare, comma-separated.
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS)]
     samplers: Vec<String>,
-    /// Samples per pixel of every compared render.
+    /// Samples per pixel of every compared render [default: 16; --quick: 4].
     #[arg(long, value_name = "N")]
     spp: Option<u32>,
-    /// Renders per sampler (seeds 0..runs).
+    /// Renders per sampler, seeds 0..runs [default: 3; --quick: 2; --paper: 10].
     #[arg(long, value_name = "N")]
     runs: Option<u32>,
-    /// Image resolution.
+    /// Image resolution [default: 256x144; --quick: 32x32; --paper: 1280x720].
     #[arg(long, value_name = "WxH")]
     res: Option<String>,
-    /// Samples per pixel of the reference.
+    /// Samples per pixel of the reference [default: 1024; --quick: 64; --paper: 4096].
     #[arg(long, value_name = "N")]
     ref_spp: Option<u32>,
-    /// Largest spp of the convergence plot (a power of two).
+    /// Largest spp of the convergence plot, a power of two [default: 1024; --quick: 8].
     #[arg(long, value_name = "N")]
     conv_max: Option<u32>,
-    /// Resolution of the convergence series [default: half of --res per side].
+    /// Resolution of the convergence series [default: half of --res per side; --quick: --res].
     #[arg(long, value_name = "WxH")]
     conv_res: Option<String>,
-    /// Samples per pixel of the convergence series' reference [default: 8 x --conv-max].
+    /// Samples per pixel of the convergence series' reference [default: 8 x --conv-max;
+    /// --quick: --ref-spp].
     #[arg(long, value_name = "N")]
     conv_ref_spp: Option<u32>,
-    /// Environment map (lat-long 2:1 or equal-area square) replacing the built-in sky.
+    /// Environment map (lat-long 2:1 or equal-area square): replaces the built-in
+    /// sky, or every image-based infinite light of a scene file (pbrt-v4 scenes
+    /// often ship without their map) [default: none].
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
     /// Paper permutation threshold of the paper's samplers (renders and point figure).
@@ -80,7 +83,7 @@ pub struct ExperimentArgs {
     /// Tiny settings for tests: 32x32, 4 spp, 2 runs, reference 64 spp.
     #[arg(long)]
     quick: bool,
-    /// No progress messages.
+    /// No progress, estimate or summary on stderr.
     #[arg(long, short = 'q')]
     quiet: bool,
 }
@@ -165,7 +168,7 @@ impl ExperimentArgs {
 pub struct Experiment {
     /// What to run.
     config: ExperimentConfig,
-    /// No progress messages.
+    /// No progress, estimate or summary on stderr.
     quiet: bool,
 }
 

@@ -48,9 +48,11 @@ pub struct FigureArgs {
     threshold: f64,
     /// Let the paper permutation act on the plotted dimensions 0-1 (the
     /// paper's figure shows the permuted sequence's 2-D arrangement); with
-    /// `false` the paper panels show the renderer's default sampler, which
-    /// permutes dimensions >= 2 only and so places samples exactly as sobol.
-    #[arg(long, value_name = "BOOL", default_value_t = true, action = clap::ArgAction::Set)]
+    /// `--paper-all-dims=false` the paper panels show the renderer's default
+    /// sampler, which permutes dimensions >= 2 only and so places samples
+    /// exactly as sobol; `--paper-all-dims` alone means true.
+    #[arg(long, value_name = "BOOL", default_value_t = true, num_args = 0..=1,
+          default_missing_value = "true", require_equals = true, action = clap::ArgAction::Set)]
     paper_all_dims: bool,
 }
 

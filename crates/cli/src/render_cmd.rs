@@ -88,8 +88,10 @@ pub struct RenderArgs {
     /// the probability that a generator-matrix column is left unflipped.
     #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
     threshold: f64,
-    /// Let the paper permutation act on the film dimensions 0-1 too.
-    #[arg(long)]
+    /// Let the paper permutation act on the film dimensions 0-1 too;
+    /// `--paper-all-dims` alone means true.
+    #[arg(long, value_name = "BOOL", default_value_t = false, num_args = 0..=1,
+          default_missing_value = "true", require_equals = true, action = clap::ArgAction::Set)]
     paper_all_dims: bool,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]

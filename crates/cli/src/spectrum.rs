@@ -61,7 +61,7 @@ pub struct SpectrumArgs {
     /// Largest frequency radius K.
     #[arg(long, value_name = "K", default_value_t = 64)]
     max_frequency: usize,
-    /// The picture: FILE.png or FILE.svg.
+    /// The picture: FILE.png or FILE.svg [required].
     #[arg(long, short = 'o', value_name = "FILE")]
     output: PathBuf,
     /// Also print the spectra as JSON on stdout.
