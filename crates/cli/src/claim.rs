@@ -18,6 +18,7 @@ use lowdisc_metrics::{DistanceMetric, min_distance, star_discrepancy};
 use serde::Serialize;
 
 use lowdisc_experiment::figure::sampler_title;
+use lowdisc_experiment::stats::MeanSd;
 
 use crate::progress::Reporter;
 use crate::{claim_report, parse, pointfile};
@@ -157,31 +158,6 @@ impl ClaimArgs {
     }
 }
 
-/// Mean and sample standard deviation.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct Stat {
-    /// Mean over the runs.
-    pub mean: f64,
-    /// Sample standard deviation (0 for one run).
-    pub sd: f64,
-}
-
-impl Stat {
-    fn of(values: &[f64]) -> Stat {
-        let n = values.len() as f64;
-        let mean = values.iter().sum::<f64>() / n;
-        let var = if values.len() > 1 {
-            values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
-        } else {
-            0.0
-        };
-        Stat {
-            mean,
-            sd: var.sqrt(),
-        }
-    }
-}
-
 /// One measured cell: a sampler, a dimension pair, a point count.
 #[derive(Debug, Clone, Serialize)]
 pub struct ClaimRow {
@@ -198,11 +174,11 @@ pub struct ClaimRow {
     /// Number of seeds measured.
     pub runs: u64,
     /// Exact star discrepancy.
-    pub star: Stat,
+    pub star: MeanSd,
     /// Minimum Euclidean distance.
-    pub min_euclidean: Stat,
+    pub min_euclidean: MeanSd,
     /// Minimum toroidal distance.
-    pub min_toroidal: Stat,
+    pub min_toroidal: MeanSd,
 }
 
 /// The seeds measured for `sampler`: one run for unscrambled Sobol.
@@ -251,9 +227,9 @@ pub fn measure(config: &ClaimConfig, progress: &Reporter) -> Result<Vec<ClaimRow
                     dims: [pair.start, pair.start + 1],
                     n,
                     runs,
-                    star: Stat::of(&star),
-                    min_euclidean: Stat::of(&euc),
-                    min_toroidal: Stat::of(&tor),
+                    star: MeanSd::of(&star),
+                    min_euclidean: MeanSd::of(&euc),
+                    min_toroidal: MeanSd::of(&tor),
                 });
             }
         }
