@@ -17,7 +17,11 @@ use lowdisc::catalog::{Order, SamplerConfig, SamplerName};
 use lowdisc_metrics::{DistanceMetric, min_distance, star_discrepancy};
 use serde::Serialize;
 
-use crate::{claim_report, parse, plots, pointfile};
+use lowdisc_experiment::figure::sampler_title;
+use lowdisc_experiment::stats::MeanSd;
+
+use crate::progress::Reporter;
+use crate::{claim_report, parse, pointfile};
 
 /// The long help of `paper-claim`.
 pub const LONG_ABOUT: &str = "\
@@ -59,6 +63,9 @@ pub struct ClaimArgs {
     /// Plot format: png or svg.
     #[arg(long, value_name = "EXT", default_value = "png")]
     plot_format: String,
+    /// No progress on stderr.
+    #[arg(long, short = 'q')]
+    quiet: bool,
 }
 
 /// A validated `paper-claim` invocation.
@@ -76,6 +83,8 @@ pub struct ClaimConfig {
     pub samplers: Vec<SamplerConfig>,
     /// Plot file extension.
     pub plot_format: String,
+    /// No progress on stderr.
+    pub quiet: bool,
 }
 
 /// The largest point count accepted.
@@ -144,32 +153,8 @@ impl ClaimArgs {
             pairs,
             samplers,
             plot_format: self.plot_format,
+            quiet: self.quiet,
         })
-    }
-}
-
-/// Mean and sample standard deviation.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct Stat {
-    /// Mean over the runs.
-    pub mean: f64,
-    /// Sample standard deviation (0 for one run).
-    pub sd: f64,
-}
-
-impl Stat {
-    fn of(values: &[f64]) -> Stat {
-        let n = values.len() as f64;
-        let mean = values.iter().sum::<f64>() / n;
-        let var = if values.len() > 1 {
-            values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
-        } else {
-            0.0
-        };
-        Stat {
-            mean,
-            sd: var.sqrt(),
-        }
     }
 }
 
@@ -189,24 +174,41 @@ pub struct ClaimRow {
     /// Number of seeds measured.
     pub runs: u64,
     /// Exact star discrepancy.
-    pub star: Stat,
+    pub star: MeanSd,
     /// Minimum Euclidean distance.
-    pub min_euclidean: Stat,
+    pub min_euclidean: MeanSd,
     /// Minimum toroidal distance.
-    pub min_toroidal: Stat,
+    pub min_toroidal: MeanSd,
 }
 
-/// Measures every cell (sampler, pair, n).
-pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
+/// The seeds measured for `sampler`: one run for unscrambled Sobol.
+fn runs_of(config: &ClaimConfig, sampler: &SamplerConfig) -> u64 {
+    if sampler.name == SamplerName::Sobol {
+        1
+    } else {
+        config.seeds
+    }
+}
+
+/// Measures every cell (sampler, pair, n), counting the points measured on
+/// `progress`.
+pub fn measure(config: &ClaimConfig, progress: &Reporter) -> Result<Vec<ClaimRow>> {
+    let points_per_pair: u64 = config
+        .samplers
+        .iter()
+        .map(|s| runs_of(config, s) * config.ns.iter().map(|&n| u64::from(n)).sum::<u64>())
+        .sum();
+    let cells = config.pairs.len() * config.samplers.len() * config.ns.len();
+    progress.begin_stage(
+        &format!("paper-claim: {cells} cells"),
+        points_per_pair * config.pairs.len() as u64,
+        "points",
+    );
     let mut rows = Vec::new();
     for pair in &config.pairs {
         for sampler in &config.samplers {
             let is_paper = matches!(sampler.name, SamplerName::Paper | SamplerName::PaperRepro);
-            let runs = if sampler.name == SamplerName::Sobol {
-                1
-            } else {
-                config.seeds
-            };
+            let runs = runs_of(config, sampler);
             for &n in &config.ns {
                 let (mut star, mut euc, mut tor) = (Vec::new(), Vec::new(), Vec::new());
                 for seed in 0..runs {
@@ -216,17 +218,18 @@ pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
                     star.push(star_discrepancy(&points)?);
                     euc.push(min_distance(&points, DistanceMetric::Euclidean)?);
                     tor.push(min_distance(&points, DistanceMetric::Toroidal)?);
+                    progress.add(u64::from(n));
                 }
                 rows.push(ClaimRow {
-                    label: plots::sampler_title(sampler),
+                    label: sampler_title(sampler),
                     sampler: sampler.name.to_string(),
                     threshold: is_paper.then_some(sampler.threshold),
                     dims: [pair.start, pair.start + 1],
                     n,
                     runs,
-                    star: Stat::of(&star),
-                    min_euclidean: Stat::of(&euc),
-                    min_toroidal: Stat::of(&tor),
+                    star: MeanSd::of(&star),
+                    min_euclidean: MeanSd::of(&euc),
+                    min_toroidal: MeanSd::of(&tor),
                 });
             }
         }
@@ -237,7 +240,9 @@ pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
 /// Runs `paper-claim`: measures, writes the report files, prints their names.
 pub fn run(config: &ClaimConfig, mut out: impl Write) -> Result<()> {
     let start = Instant::now();
-    let rows = measure(config)?;
+    let progress = Reporter::new(config.quiet);
+    let rows = measure(config, &progress)?;
+    progress.end_stage();
     let seconds = start.elapsed().as_secs_f64();
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;

@@ -8,10 +8,12 @@ use anyhow::Result;
 use lowdisc_plot::{Color, LineChart, Series};
 use serde::Serialize;
 
-use crate::claim::{ClaimConfig, ClaimRow, Stat};
+use lowdisc_experiment::stats::MeanSd;
+
+use crate::claim::{ClaimConfig, ClaimRow};
 
 /// The three measured quantities: file stem, title, accessor.
-type Quantity = (&'static str, &'static str, fn(&ClaimRow) -> Stat);
+type Quantity = (&'static str, &'static str, fn(&ClaimRow) -> MeanSd);
 
 const QUANTITIES: [Quantity; 3] = [
     ("dstar", "Star discrepancy D*_N (exact)", |r| r.star),

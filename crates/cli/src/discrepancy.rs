@@ -14,6 +14,7 @@ use lowdisc_metrics::PointSet;
 use serde::Serialize;
 
 use crate::metric_rows::{self, MetricRow};
+use crate::progress::Reporter;
 use crate::{limits, parse, pointfile};
 
 /// Which metric to compute.
@@ -59,7 +60,7 @@ where each result has metric, value (or lower/upper), method and seconds.\n\
 /// The arguments of `discrepancy`.
 #[derive(Debug, Args)]
 pub struct DiscrepancyArgs {
-    /// Sampler name (see `lowdisc points --help`).
+    /// Sampler name (see `lowdisc points --help`) [required unless --input].
     #[arg(
         long,
         short = 's',
@@ -67,7 +68,7 @@ pub struct DiscrepancyArgs {
         required_unless_present = "input"
     )]
     sampler: Option<String>,
-    /// Read the points from FILE instead of a sampler.
+    /// Read the points from FILE instead of a sampler [required unless --sampler].
     #[arg(long, short = 'i', value_name = "FILE", conflicts_with_all = ["sampler", "n", "dims", "dim_range", "threshold"])]
     input: Option<PathBuf>,
     /// Number of points [default: 256].
@@ -100,6 +101,9 @@ pub struct DiscrepancyArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     json: bool,
+    /// No progress on stderr (shown for sets of 20000 points or more).
+    #[arg(long, short = 'q')]
+    quiet: bool,
 }
 
 /// Where the points come from.
@@ -126,7 +130,11 @@ pub struct DiscrepancyConfig {
     options: metric_rows::Options,
     max_memory: u64,
     json: bool,
+    quiet: bool,
 }
+
+/// Point sets at least this large show their progress on stderr.
+const LARGE: usize = 20_000;
 
 impl DiscrepancyArgs {
     /// Checks every option and builds the configuration.
@@ -164,6 +172,7 @@ impl DiscrepancyArgs {
             },
             max_memory: self.max_memory,
             json: self.json,
+            quiet: self.quiet,
         })
     }
 }
@@ -180,7 +189,18 @@ struct Report<'a> {
 /// Runs `discrepancy`, printing to `out`.
 pub fn run(config: &DiscrepancyConfig, mut out: impl Write) -> Result<()> {
     let (points, source) = load(&config.source, config.max_memory)?;
-    let rows = metric_rows::compute(&points, config.metric, &config.options)?;
+    let progress = Reporter::new(config.quiet || points.len() < LARGE);
+    progress.begin_stage(
+        &format!(
+            "discrepancy of {} points in {} dimensions",
+            points.len(),
+            points.dims()
+        ),
+        metric_rows::computations(config.metric),
+        "metrics",
+    );
+    let rows = metric_rows::compute(&points, config.metric, &config.options, &progress)?;
+    progress.end_stage();
     if config.json {
         let report = Report {
             source,

@@ -13,7 +13,6 @@
 
 mod claim;
 mod claim_report;
-mod compose;
 mod discrepancy;
 mod experiment;
 mod figure;
@@ -25,6 +24,7 @@ mod parse;
 mod plots;
 mod pointfile;
 mod points;
+mod progress;
 mod render_cmd;
 mod render_stats;
 mod spectrum;

@@ -14,6 +14,7 @@ use serde::Serialize;
 
 use crate::discrepancy::Metric;
 use crate::limits;
+use crate::progress::Reporter;
 
 /// Options shared by the metrics.
 #[derive(Debug, Clone, Copy)]
@@ -59,11 +60,23 @@ impl MetricRow {
     }
 }
 
-/// Runs `f` and returns its result with the elapsed seconds.
-fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+/// Runs `f` and returns its result with the elapsed seconds; counts one
+/// computation done on `progress`.
+fn timed<T>(progress: &Reporter, f: impl FnOnce() -> T) -> (T, f64) {
     let start = Instant::now();
     let result = f();
+    progress.add(1);
     (result, start.elapsed().as_secs_f64())
+}
+
+/// The number of separate computations [`compute`] runs for `metric` (the
+/// units of its progress).
+pub fn computations(metric: Metric) -> u64 {
+    match metric {
+        Metric::All => 6,
+        Metric::Mindist => 2,
+        _ => 1,
+    }
 }
 
 /// The method note of the exact star discrepancy in `d` dimensions.
@@ -117,7 +130,12 @@ fn refuse(
 /// Computes the rows of `metric` (all metrics for [`Metric::All`], where an
 /// unaffordable exact star discrepancy or a one-point distance becomes a row
 /// without value instead of an error).
-pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<Vec<MetricRow>> {
+pub fn compute(
+    points: &PointSet,
+    metric: Metric,
+    options: &Options,
+    progress: &Reporter,
+) -> Result<Vec<MetricRow>> {
     let all = metric == Metric::All;
     let mut rows = Vec::new();
     let (n, d) = (points.len(), points.dims());
@@ -125,7 +143,7 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
         let exact = ExactOptions {
             max_work: options.max_work,
         };
-        let (result, seconds) = timed(|| star_discrepancy_with(points, &exact));
+        let (result, seconds) = timed(progress, || star_discrepancy_with(points, &exact));
         match result {
             Ok(v) => rows.push(MetricRow::value("star", v, exact_method(d), seconds)),
             Err(MetricsError::TooExpensive {
@@ -157,7 +175,7 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
         };
         let work = cost::bounds_work(n, d, &bounds_options);
         if affordable(&mut rows, all, "star-bounds", work, options.max_work)? {
-            let (bounds, seconds) = timed(|| star_bounds(points, &bounds_options));
+            let (bounds, seconds) = timed(progress, || star_bounds(points, &bounds_options));
             let bounds = bounds?;
             rows.push(MetricRow {
                 metric: "star-bounds".into(),
@@ -176,7 +194,9 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
     if (all || metric == Metric::StarLower)
         && affordable(&mut rows, all, "star-lower", work, options.max_work)?
     {
-        let (v, seconds) = timed(|| random_box_lower_bound(points, options.boxes, options.seed));
+        let (v, seconds) = timed(progress, || {
+            random_box_lower_bound(points, options.boxes, options.seed)
+        });
         let method = format!(
             "lower bound: worst of {} random anchored boxes (the paper's method), seed {}",
             options.boxes, options.seed
@@ -203,7 +223,7 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
         )?;
     if !l2_affordable {
     } else if all {
-        let (values, seconds) = timed(|| l2_discrepancies(points));
+        let (values, seconds) = timed(progress, || l2_discrepancies(points));
         for (method, name) in l2_wanted {
             let v = match method {
                 L2Method::L2Star => values.l2_star,
@@ -214,7 +234,7 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
             rows.push(MetricRow::value(name, v, l2_note(method, true), seconds));
         }
     } else if let Some(&(method, name)) = l2_wanted.first() {
-        let (v, seconds) = timed(|| l2_discrepancy(points, method));
+        let (v, seconds) = timed(progress, || l2_discrepancy(points, method));
         rows.push(MetricRow::value(name, v, l2_note(method, false), seconds));
     }
     if all || metric == Metric::Mindist {
@@ -238,7 +258,7 @@ pub fn compute(points: &PointSet, metric: Metric, options: &Options) -> Result<V
                 (DistanceMetric::Euclidean, "euclidean"),
                 (DistanceMetric::Toroidal, "toroidal"),
             ] {
-                let (stats, seconds) = timed(|| distance_stats(points, distance));
+                let (stats, seconds) = timed(progress, || distance_stats(points, distance));
                 let stats = stats?;
                 let note = format!("{name}, exact (grid search)");
                 rows.push(MetricRow::value(

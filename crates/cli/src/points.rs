@@ -80,8 +80,10 @@ pub struct PointsArgs {
     /// Paper permutation threshold in [0,1]: probability a matrix column is left unflipped.
     #[arg(long, default_value_t = SamplerConfig::DEFAULT_THRESHOLD, allow_negative_numbers = true)]
     threshold: f64,
-    /// Let the paper permutation act on dimensions 0-1 too (pixel samplers).
-    #[arg(long)]
+    /// Let the paper permutation act on dimensions 0-1 too (pixel samplers);
+    /// `--paper-all-dims` alone means true.
+    #[arg(long, value_name = "BOOL", default_value_t = false, num_args = 0..=1,
+          default_missing_value = "true", require_equals = true, action = clap::ArgAction::Set)]
     paper_all_dims: bool,
     /// Point order of the Sobol family [default: gray]; other samplers ignore it.
     #[arg(long, value_enum, conflicts_with = "pixel")]

@@ -3,19 +3,19 @@
 //!
 //! Arguments become a validated [`RenderConfig`] before any work starts; the
 //! render itself runs in the `lowdisc-render` library, which reports progress
-//! through a callback that drives an `indicatif` bar here (only when stderr is
-//! a terminal, and never with `--quiet`). Warnings go to stderr, each distinct
+//! through a callback that drives [`crate::progress::Reporter`] (a bar on a
+//! terminal, lines otherwise, nothing with `--quiet`), which also says where
+//! the image went. Warnings go to stderr, each distinct
 //! one once (also suppressed by `--quiet`); `--stats` prints the counters and
 //! the time per phase to stdout. A scene file's own settings (sampler, spp,
 //! maxdepth, resolution, output file) apply unless a flag overrides them.
 
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
-use indicatif::{ProgressBar, ProgressStyle};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::film::PEAK_BYTES_PER_PIXEL;
@@ -25,6 +25,7 @@ use lowdisc_render::render::{MAX_SPP, Progress, RenderOptions, render};
 use lowdisc_render::scene::Scene;
 use std::collections::HashSet;
 
+use crate::progress::Reporter;
 use crate::render_stats::{self, Phases};
 use crate::{limits, parse};
 
@@ -90,8 +91,10 @@ pub struct RenderArgs {
     /// the probability that a generator-matrix column is left unflipped.
     #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
     threshold: f64,
-    /// Let the paper permutation act on the film dimensions 0-1 too.
-    #[arg(long)]
+    /// Let the paper permutation act on the film dimensions 0-1 too;
+    /// `--paper-all-dims` alone means true.
+    #[arg(long, value_name = "BOOL", default_value_t = false, num_args = 0..=1,
+          default_missing_value = "true", require_equals = true, action = clap::ArgAction::Set)]
     paper_all_dims: bool,
     /// Largest memory (MiB) of the film and its image.
     #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
@@ -362,23 +365,19 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         ..Phases::default()
     };
 
-    let bar = progress_bar(config);
-    let on_progress = |p: Progress| {
-        if let Some(bar) = &bar {
-            bar.set_length(p.samples_total);
-            bar.set_position(p.samples_done);
-            let secs = bar.elapsed().as_secs_f64();
-            if secs > 0.0 {
-                bar.set_message(format!("{:.2} Mrays/s", p.rays as f64 / secs / 1e6));
-            }
-        }
-    };
+    let reporter = Reporter::new(config.quiet);
+    let [w, h] = scene.film().params.resolution;
+    let total = u64::from(w) * u64::from(h) * u64::from(options.sampler.spp);
+    let title = format!(
+        "rendering {w}x{h}, {} spp with {}",
+        options.sampler.spp, options.sampler.name
+    );
+    reporter.begin_stage(&title, total, "samples");
+    let on_progress = |p: Progress| reporter.advance_stage(p.samples_done);
     let t1 = Instant::now();
     let out = render(&scene, &options, &on_progress)?;
     phases.render = t1.elapsed();
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
+    reporter.end_stage();
     for w in &out.warnings {
         warn_once(&mut seen, config.quiet, w);
     }
@@ -387,6 +386,7 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         .write(&output, scene.film().exposure)
         .with_context(|| format!("cannot write `{}`", output.display()))?;
     phases.write = t2.elapsed();
+    reporter.line(&format!("wrote {}", output.display()));
     if config.stats {
         render_stats::print_stats(std::io::stdout().lock(), &scene, &out, &phases)
             .context("cannot print the statistics")?;
@@ -394,13 +394,3 @@ pub fn run(config: &RenderConfig) -> Result<()> {
     Ok(())
 }
 
-fn progress_bar(config: &RenderConfig) -> Option<ProgressBar> {
-    if config.quiet || !std::io::stderr().is_terminal() {
-        return None;
-    }
-    let bar = ProgressBar::new(1);
-    let style = ProgressStyle::with_template("{bar:40} {percent:>3}% {msg} ETA {eta}")
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
-    bar.set_style(style);
-    Some(bar)
-}

@@ -10,11 +10,12 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, bail};
 use clap::Args;
 use lowdisc::catalog::{Order, SamplerConfig};
+use lowdisc_experiment::figure::sampler_title;
 use lowdisc_metrics::{RadialSpectrum, radial_power_spectrum};
-use lowdisc_plot::{LineChart, ScatterGrid, ScatterPanel, Series};
+use lowdisc_plot::{LineChart, ScatterGrid, ScatterPanel, Series, compose};
 use serde::Serialize;
 
-use crate::{compose, limits, parse, plots, pointfile};
+use crate::{limits, parse, pointfile};
 
 /// The long help of `spectrum` (`lowdisc spectrum --help`).
 pub const LONG_ABOUT: &str = "\
@@ -60,7 +61,7 @@ pub struct SpectrumArgs {
     /// Largest frequency radius K.
     #[arg(long, value_name = "K", default_value_t = 64)]
     max_frequency: usize,
-    /// The picture: FILE.png or FILE.svg.
+    /// The picture: FILE.png or FILE.svg [required].
     #[arg(long, short = 'o', value_name = "FILE")]
     output: PathBuf,
     /// Also print the spectra as JSON on stdout.
@@ -151,7 +152,7 @@ pub fn run(config: &SpectrumConfig, mut out: impl Write) -> Result<()> {
         let points =
             pointfile::sequence_points(sampler, config.n, config.dims.clone(), Order::Natural)?;
         let spectrum = radial_power_spectrum(&points, config.max_frequency)?;
-        let title = plots::sampler_title(sampler);
+        let title = sampler_title(sampler);
         let xy: Vec<[f64; 2]> = points.iter().map(|p| [p[0], p[1]]).collect();
         let mut scatter = ScatterGrid::row(vec![ScatterPanel::new(
             format!(
@@ -184,7 +185,7 @@ pub fn run(config: &SpectrumConfig, mut out: impl Write) -> Result<()> {
             .with(Series::reference("white noise (1)", white));
         rows.push(vec![scatter, chart.to_canvas()]);
         entries.push(Entry {
-            sampler: plots::sampler_title(sampler),
+            sampler: sampler_title(sampler),
             threshold: matches!(
                 sampler.name,
                 lowdisc::catalog::SamplerName::Paper | lowdisc::catalog::SamplerName::PaperRepro

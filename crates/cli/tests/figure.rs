@@ -86,3 +86,63 @@ fn points_plot_draws_instead_of_printing() {
     png_size(&std::fs::read(&png).unwrap());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn paper_all_dims_is_the_same_kind_of_option_everywhere() {
+    // `--paper-all-dims` alone means true and `--paper-all-dims=BOOL` sets it,
+    // in points, figure and render alike.
+    let pixel = |extra: &[&str]| {
+        let mut args = vec![
+            "points",
+            "--sampler",
+            "paper-repro",
+            "--pixel",
+            "0,0",
+            "--spp",
+            "16",
+            "--dims",
+            "2",
+        ];
+        args.extend_from_slice(extra);
+        stdout_of(&args)
+    };
+    let default = pixel(&[]);
+    let on = pixel(&["--paper-all-dims"]);
+    assert_eq!(on, pixel(&["--paper-all-dims=true"]));
+    assert_eq!(default, pixel(&["--paper-all-dims=false"]));
+    assert_ne!(on, default, "the permutation moves the film positions");
+
+    let dir = temp_dir("paper-all-dims");
+    let svg = |name: &str, extra: &[&str]| {
+        let file = dir.join(name);
+        let mut args = vec![
+            "figure",
+            "--samplers",
+            "paper-repro",
+            "-o",
+            file.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        stdout_of(&args);
+        std::fs::read_to_string(file).unwrap()
+    };
+    let figure_default = svg("a.svg", &[]);
+    assert_eq!(figure_default, svg("b.svg", &["--paper-all-dims"]));
+    assert_ne!(figure_default, svg("c.svg", &["--paper-all-dims=false"]));
+    let exr = dir.join("r.exr");
+    stdout_of(&[
+        "render",
+        "--res",
+        "8x8",
+        "--spp",
+        "1",
+        "--sampler",
+        "paper-repro",
+        "--paper-all-dims",
+        "-q",
+        "-o",
+        exr.to_str().unwrap(),
+    ]);
+    assert!(exr.is_file());
+    let _ = std::fs::remove_dir_all(&dir);
+}

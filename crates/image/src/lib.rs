@@ -8,14 +8,13 @@
 //!   quantisation.
 //! - Error metrics ([`metrics`]): MSE, relMSE, RMSE and MAE on linear radiance
 //!   and on 8-bit sRGB, per-pixel error images.
-//! - Visualisation and utilities ([`mod@heatmap`], [`ops`]): false-colour
-//!   heatmaps, crops, nearest-neighbour upscaling, statistics.
+//! - Utilities ([`ops`]): crops, nearest-neighbour upscaling, statistics.
+//!   (False-colour heatmaps with a colour bar are `lowdisc-plot`'s.)
 //!
 //! Nothing here panics on bad input: every failure is an [`ImageError`].
 
 pub mod color;
 pub mod error;
-pub mod heatmap;
 pub mod image;
 pub mod io;
 pub mod metrics;
@@ -23,7 +22,6 @@ pub mod ops;
 
 pub use color::{luminance, srgb_decode, srgb_encode, srgb8_decode, srgb8_encode, to_srgb8};
 pub use error::{ErrorKind, ImageError};
-pub use heatmap::{Normalization, heatmap, viridis};
 pub use image::{MAX_PIXELS, RgbImage};
 pub use io::{
     ImageFormat, ReadOptions, Transfer, WriteOptions, decode_image, encode_image, read_image,

@@ -35,7 +35,8 @@ impl Axis {
     }
 
     /// An axis covering the finite values (positive ones for a log axis),
-    /// widened to whole decades (log) or by 4% on each side (linear).
+    /// widened by 4% of the span on each side (of the decades spanned, for
+    /// a log axis; half a decade each way for a single value).
     /// Falls back to `[0, 1]` (or `[1, 10]`) when there are none.
     pub fn fit(values: impl IntoIterator<Item = f64>, log: bool) -> Self {
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
@@ -49,9 +50,9 @@ impl Axis {
             if lo > hi {
                 return Axis::log(1.0, 10.0);
             }
-            let (a, b) = (lo.log10().floor(), hi.log10().ceil());
-            let b = if b <= a { a + 1.0 } else { b };
-            Axis::log(10f64.powf(a), 10f64.powf(b))
+            let (a, b) = (lo.log10(), hi.log10());
+            let pad = if b > a { 0.04 * (b - a) } else { 0.5 };
+            Axis::log(10f64.powf(a - pad), 10f64.powf(b + pad))
         } else {
             if lo > hi {
                 return Axis::linear(0.0, 1.0);
@@ -75,10 +76,21 @@ impl Axis {
     }
 
     /// Tick positions with labels: powers of ten on a log axis (every k-th
-    /// decade when there are many), multiples of 1, 2 or 5 times a power of
-    /// ten on a linear axis, about `target` of them.
+    /// decade when there are many; 1, 2 and 5 times them when fewer than
+    /// three fall inside), multiples of 1, 2 or 5 times a power of ten on a
+    /// linear axis, about `target` of them.
     pub fn ticks(&self, target: usize) -> Vec<(f64, String)> {
         if self.log {
+            let (lo, hi) = (self.min.log10(), self.max.log10());
+            if hi.floor() - lo.ceil() < 2.0 {
+                let inside =
+                    |v: &f64| *v >= self.min * (1.0 - 1e-9) && *v <= self.max * (1.0 + 1e-9);
+                return (lo.floor() as i32..=hi.ceil() as i32)
+                    .flat_map(|e| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(e)))
+                    .filter(inside)
+                    .map(|v| (v, short(v)))
+                    .collect();
+            }
             let (a, b) = (
                 self.min.log10().ceil() as i32,
                 self.max.log10().floor() as i32,
@@ -260,10 +272,25 @@ mod tests {
     }
 
     #[test]
-    fn fit_widens_to_decades_and_maps_ends() {
-        let a = Axis::fit([3.0, 450.0, -1.0, f64::NAN], true);
-        assert_eq!((a.min, a.max), (1.0, 1000.0));
-        assert!((a.fraction(10.0) - 1.0 / 3.0).abs() < 1e-12);
+    fn fit_pads_the_data_span_and_maps_ends() {
+        // 1 to 1024 spp: 3.01 decades, padded by 4 % of them, not to 1e4.
+        let a = Axis::fit([1.0, 1024.0, -1.0, f64::NAN], true);
+        let pad = 0.04 * 1024f64.log10();
+        assert!((a.min.log10() + pad).abs() < 1e-12, "{a:?}");
+        assert!(
+            (a.max.log10() - 1024f64.log10() - pad).abs() < 1e-12,
+            "{a:?}"
+        );
+        assert!((a.fraction(1.0) - pad / (1024f64.log10() + 2.0 * pad)).abs() < 1e-12);
+        let one = Axis::fit([5.0], true);
+        assert!((one.min - 5.0 / 10f64.sqrt()).abs() < 1e-12);
+        // Within a decade and a half the ticks are 1, 2, 5 times powers of ten.
+        let t: Vec<f64> = Axis::log(0.15, 3.0)
+            .ticks(6)
+            .into_iter()
+            .map(|t| t.0)
+            .collect();
+        assert_eq!(t, vec![0.2, 0.5, 1.0, 2.0]);
         let f = Frame {
             x: 10.0,
             y: 0.0,

@@ -92,8 +92,11 @@ impl LineChart {
     /// Draws the chart. Points that cannot be shown (non-finite, or not
     /// positive on a log axis) are skipped and break the line.
     pub fn to_canvas(&self) -> Canvas {
-        let [w, h] = self.size;
+        let [plot_w, h] = self.size;
         let font = (h as f32 / 34.0).clamp(10.0, 16.0);
+        // The legend sits right of the plot area, so it never hides data.
+        let legend_w = self.legend_width(font);
+        let w = plot_w + legend_w.ceil() as u32;
         let mut canvas = Canvas::new(w, h);
         let all = self.series.iter().flat_map(|s| s.points.iter());
         let x_axis = Axis::fit(all.clone().map(|p| p[0]), self.x_log);
@@ -101,14 +104,14 @@ impl LineChart {
         let frame = Frame {
             x: 5.5 * font,
             y: 2.6 * font,
-            width: w as f32 - 6.5 * font,
+            width: plot_w as f32 - 6.5 * font,
             height: h as f32 - 6.0 * font,
             x_axis,
             y_axis,
             y_down: false,
         };
         canvas.text(
-            [w as f32 / 2.0, 1.7 * font],
+            [plot_w as f32 / 2.0, 1.7 * font],
             &self.title,
             TextStyle::new(1.2 * font, Anchor::Middle),
         );
@@ -130,9 +133,10 @@ impl LineChart {
         canvas
     }
 
-    fn draw_legend(&self, canvas: &mut Canvas, frame: &Frame, font: f32) {
+    /// The legend box's width (0 without series).
+    fn legend_box_width(&self, font: f32) -> f32 {
         if self.series.is_empty() {
-            return;
+            return 0.0;
         }
         let style = TextStyle::new(0.85 * font, Anchor::Start);
         let text_w = self
@@ -140,11 +144,25 @@ impl LineChart {
             .iter()
             .map(|s| text_width(&s.name, &style))
             .fold(0.0, f32::max);
+        text_w + 3.6 * font
+    }
+
+    /// The width added right of the plot for the legend.
+    fn legend_width(&self, font: f32) -> f32 {
+        let b = self.legend_box_width(font);
+        if b > 0.0 { b + font } else { 0.0 }
+    }
+
+    fn draw_legend(&self, canvas: &mut Canvas, frame: &Frame, font: f32) {
+        if self.series.is_empty() {
+            return;
+        }
+        let style = TextStyle::new(0.85 * font, Anchor::Start);
         let line_h = 1.3 * font;
-        let box_w = text_w + 3.6 * font;
+        let box_w = self.legend_box_width(font);
         let box_h = line_h * self.series.len() as f32 + 0.6 * font;
-        let x0 = frame.x + frame.width - box_w - 0.5 * font;
-        let y0 = frame.y + 0.5 * font;
+        let x0 = frame.x + frame.width + 0.5 * font;
+        let y0 = frame.y;
         canvas.rect(
             [x0, y0],
             [box_w, box_h],

@@ -1,38 +1,34 @@
 //! Running the experiment: the scene, the repeated renders of every sampler
 //! and their convergence series, collected with the reference and the
-//! threshold sweep into [`Results`] and handed to [`super::report`].
+//! threshold sweep into [`Results`] and handed to [`crate::report`].
 
+use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
-use lowdisc_image::{ErrorStats, ImageFormat, ReadOptions, RgbImage, decode_image, error_metrics};
+use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, decode_image};
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
-use lowdisc_render::render::{NoProgress, RenderOptions, render};
+use lowdisc_render::render::{RenderOptions, render};
 use lowdisc_render::scene::Scene;
 
-use super::reference::reference as render_reference;
-use super::results::{
-    ConvPoint, Images, MetricSummary, Results, RunResult, SamplerResult, fill_ratios,
-};
-use super::stats::{FNV_OFFSET, MeanSd, fnv1a, log_log_slope};
-use super::sweep::threshold_sweep;
-use super::{ExperimentConfig, report, scene};
-
-/// Prints `msg` to stderr unless `--quiet`.
-pub fn progress(config: &ExperimentConfig, msg: &str) {
-    if !config.quiet {
-        eprintln!("{msg}");
-    }
-}
+use crate::config::ExperimentConfig;
+use crate::metrics::{ErrorStats, MetricSummary, measure};
+use crate::plan::{calibrate, total_samples};
+use crate::progress::{Progress, Stage, samples};
+use crate::reference::{cache_file, reference as render_reference};
+use crate::results::{ConvPoint, Images, Results, RunResult, SamplerResult, fill_ratios};
+use crate::stats::{FNV_OFFSET, MeanSd, fnv1a, log_log_slope};
+use crate::sweep::threshold_sweep;
+use crate::{report, scene};
 
 /// The scene and the hash of its content: the built-in scene's id or the
 /// scene file's bytes (not the files it includes), and the environment
 /// map's bytes. `--envmap` replaces the built-in sky, or every image-based
 /// `infinite` light of a scene file (pbrt-v4 scenes often ship without
 /// their environment map).
-fn load(config: &ExperimentConfig) -> Result<(Scene, u64)> {
+fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result<(Scene, u64)> {
     let mut hash = FNV_OFFSET;
     let read = |p: &std::path::Path| {
         std::fs::read(p).with_context(|| format!("cannot read `{}`", p.display()))
@@ -66,7 +62,7 @@ fn load(config: &ExperimentConfig) -> Result<(Scene, u64)> {
             let loaded = load_pbrt_scene(path, &options)
                 .with_context(|| format!("cannot load scene `{}`", path.display()))?;
             for w in &loaded.warnings {
-                progress(config, w);
+                observer.note(w);
             }
             let mut s = loaded.scene;
             s.set_resolution(config.resolution)?;
@@ -104,13 +100,15 @@ fn measure_sampler(
     scene: &Scene,
     name: SamplerName,
     reference: &RgbImage,
+    stage: &Stage,
 ) -> Result<(SamplerResult, RgbImage)> {
     let mut runs = Vec::new();
     let mut first: Option<RgbImage> = None;
     let mut deterministic = true;
     for seed in 0..u64::from(config.runs) {
-        let out = render(scene, &options(config, name, seed, config.spp), &NoProgress)?;
-        let m = error_metrics(&out.image, reference)?;
+        let out = render(scene, &options(config, name, seed, config.spp), stage)?;
+        stage.finished_render(out.stats.samples);
+        let m = measure(&out.image, reference)?;
         runs.push(RunResult {
             seed,
             time_s: out.stats.time.as_secs_f64(),
@@ -137,6 +135,7 @@ fn measure_sampler(
         mae: lin.mae,
         srgb8: MetricSummary::of(&srgb8),
         relmse_ratio_to_sobol: None,
+        relmse_ratio_interval: None,
         runs,
         convergence_slope: None,
         convergence: Vec::new(),
@@ -151,14 +150,16 @@ fn convergence(
     scene: &Scene,
     name: SamplerName,
     reference: &RgbImage,
+    stage: &Stage,
 ) -> Result<(Vec<ConvPoint>, Option<f64>)> {
     let mut series = Vec::new();
     let mut spp = 1;
     while spp <= config.conv_max {
-        let out = render(scene, &options(config, name, 0, spp), &NoProgress)?;
+        let out = render(scene, &options(config, name, 0, spp), stage)?;
+        stage.finished_render(out.stats.samples);
         series.push(ConvPoint {
             spp,
-            relmse: error_metrics(&out.image, reference)?.linear.relmse,
+            relmse: measure(&out.image, reference)?.linear.relmse,
         });
         spp *= 2;
     }
@@ -169,41 +170,51 @@ fn convergence(
     Ok((series, log_log_slope(&pts)))
 }
 
-/// Runs the experiment and writes the report folder.
-pub fn run(config: &ExperimentConfig) -> Result<()> {
+/// What a finished run leaves behind.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// Every file written to the report folder, then the reference files.
+    pub files: Vec<PathBuf>,
+    /// Wall time of the whole run, seconds.
+    pub seconds: f64,
+}
+
+/// Runs the experiment and writes the report folder, telling `observer`
+/// what it does.
+pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<Outcome> {
+    config.validate()?;
     let start = Instant::now();
-    let (mut scene, scene_hash) = load(config)?;
+    let (mut scene, scene_hash) = load(config, observer)?;
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
-    let (reference, ref_info) = render_reference(config, &scene, scene_hash, config.ref_spp)?;
+    let cached = [
+        (config.resolution, config.ref_spp),
+        (config.conv_res, config.conv_ref_spp),
+    ]
+    .map(|(res, spp)| cache_file(config, res, scene_hash, spp).is_file());
+    observer.estimate(&calibrate(config, &scene, total_samples(config, cached))?);
+    let (reference, ref_info) =
+        render_reference(config, &scene, scene_hash, config.ref_spp, observer)?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();
+    let per_sampler = u64::from(config.runs) * samples(config.resolution, config.spp);
     for (k, &name) in config.samplers.iter().enumerate() {
-        progress(
-            config,
-            &format!(
-                "[{}/{}] {}: {} runs at {} spp",
-                k + 1,
-                config.samplers.len(),
-                name.as_str(),
-                config.runs,
-                config.spp
-            ),
+        let title = format!(
+            "[{}/{}] {}: {} runs at {} spp",
+            k + 1,
+            config.samplers.len(),
+            name.as_str(),
+            config.runs,
+            config.spp
         );
-        let (r, image) = measure_sampler(config, &scene, name, &reference)?;
+        let stage = Stage::begin(observer, &title, per_sampler);
+        let (r, image) = measure_sampler(config, &scene, name, &reference, &stage)?;
+        stage.end();
         samplers.push(r);
         renders.push(image);
     }
     fill_ratios(&mut samplers);
-    progress(
-        config,
-        &format!(
-            "threshold sweep: paper-repro at {} thresholds, {} runs each",
-            super::sweep::THRESHOLDS.len(),
-            config.runs
-        ),
-    );
-    let threshold_sweep = threshold_sweep(config, &scene, &reference)?;
+    let threshold_sweep = threshold_sweep(config, &scene, &reference, observer)?;
     // The convergence series: at `conv_res` against their own reference
     // (the main one when resolution and spp are the same).
     let same = config.conv_res == config.resolution && config.conv_ref_spp == config.ref_spp;
@@ -212,19 +223,22 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
         (&reference, ref_info.clone())
     } else {
         scene.set_resolution(config.conv_res)?;
-        let (image, info) = render_reference(config, &scene, scene_hash, config.conv_ref_spp)?;
+        let (image, info) =
+            render_reference(config, &scene, scene_hash, config.conv_ref_spp, observer)?;
         conv_own = image;
         (&conv_own, info)
     };
+    // Spp 1, 2, 4, .. conv_max: 2 conv_max - 1 samples per pixel in all.
+    let per_series = samples(config.conv_res, 2 * config.conv_max - 1);
     for (s, &name) in samplers.iter_mut().zip(&config.samplers) {
-        progress(
-            config,
-            &format!(
-                "convergence of {}: 1 to {} spp at {}x{}",
-                s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
-            ),
+        let title = format!(
+            "convergence of {}: 1 to {} spp at {}x{}",
+            s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
         );
-        (s.convergence, s.convergence_slope) = convergence(config, &scene, name, conv_reference)?;
+        let stage = Stage::begin(observer, &title, per_series);
+        (s.convergence, s.convergence_slope) =
+            convergence(config, &scene, name, conv_reference, &stage)?;
+        stage.end();
     }
     let results = Results {
         samplers,
@@ -233,13 +247,17 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
         threshold_sweep,
     };
     let images = Images { reference, renders };
-    report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
-    progress(
-        config,
-        &format!(
-            "report written to {}",
-            config.out.join("report.md").display()
-        ),
-    );
-    Ok(())
+    let mut files = report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
+    files.push(results.reference.file.clone());
+    if !same {
+        files.push(results.convergence_reference.file.clone());
+    }
+    observer.note(&format!(
+        "report written to {}",
+        config.out.join("report.md").display()
+    ));
+    Ok(Outcome {
+        files,
+        seconds: start.elapsed().as_secs_f64(),
+    })
 }

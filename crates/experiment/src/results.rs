@@ -4,10 +4,11 @@
 
 use std::path::PathBuf;
 
-use lowdisc_image::{ErrorStats, RgbImage};
+use lowdisc_image::RgbImage;
 use serde::Serialize;
 
-use super::stats::{MeanSd, ratio};
+use crate::metrics::{ErrorStats, MetricSummary};
+use crate::stats::{MeanSd, ratio, ratio_interval};
 
 /// One render's numbers.
 #[derive(Debug, Clone, Serialize)]
@@ -20,32 +21,6 @@ pub struct RunResult {
     pub linear: ErrorStats,
     /// Errors on 8-bit sRGB.
     pub srgb8: ErrorStats,
-}
-
-/// Mean and sd of the four metrics.
-#[derive(Debug, Clone, Serialize)]
-pub struct MetricSummary {
-    /// MSE.
-    pub mse: MeanSd,
-    /// relMSE.
-    pub relmse: MeanSd,
-    /// RMSE.
-    pub rmse: MeanSd,
-    /// MAE.
-    pub mae: MeanSd,
-}
-
-impl MetricSummary {
-    /// Aggregates one metric family over runs.
-    pub fn of(stats: &[ErrorStats]) -> MetricSummary {
-        let col = |f: fn(&ErrorStats) -> f64| MeanSd::of(&stats.iter().map(f).collect::<Vec<_>>());
-        MetricSummary {
-            mse: col(|s| s.mse),
-            relmse: col(|s| s.relmse),
-            rmse: col(|s| s.rmse),
-            mae: col(|s| s.mae),
-        }
-    }
 }
 
 /// One point of a convergence series.
@@ -80,6 +55,9 @@ pub struct SamplerResult {
     pub srgb8: MetricSummary,
     /// Mean linear relMSE over `sobol`'s.
     pub relmse_ratio_to_sobol: Option<f64>,
+    /// Approximate 95 % interval of that ratio ([`crate::stats::ratio_interval`];
+    /// `[1, 1]` for `sobol` itself).
+    pub relmse_ratio_interval: Option<[f64; 2]>,
     /// Every run.
     pub runs: Vec<RunResult>,
     /// relMSE against spp (seed 0).
@@ -133,48 +111,56 @@ pub struct Images {
     pub renders: Vec<RgbImage>,
 }
 
-/// Fills every sampler's `relmse_ratio_to_sobol` from the `sobol` entry.
+/// Fills every sampler's `relmse_ratio_to_sobol` and its interval from the
+/// `sobol` entry.
 pub fn fill_ratios(samplers: &mut [SamplerResult]) {
     let base = samplers
         .iter()
         .find(|s| s.name == "sobol")
-        .map(|s| s.relmse.mean);
+        .map(|s| (s.relmse, s.runs.len()));
     for s in samplers {
-        s.relmse_ratio_to_sobol = ratio(s.relmse.mean, base);
+        s.relmse_ratio_to_sobol = ratio(s.relmse.mean, base.map(|b| b.0.mean));
+        s.relmse_ratio_interval = if s.name == "sobol" {
+            s.relmse_ratio_to_sobol.map(|r| [r, r])
+        } else {
+            base.and_then(|(b, nb)| ratio_interval(s.relmse, s.runs.len(), b, nb))
+        };
+    }
+}
+
+/// A sampler result with every metric `relmse` (sd 0) and no runs, for tests.
+#[cfg(test)]
+pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
+    let m = MeanSd {
+        mean: relmse,
+        sd: 0.0,
+    };
+    SamplerResult {
+        name: name.into(),
+        description: String::new(),
+        deterministic: false,
+        time_s: m,
+        mse: m,
+        relmse: m,
+        rmse: m,
+        mae: m,
+        srgb8: MetricSummary {
+            mse: m,
+            relmse: m,
+            rmse: m,
+            mae: m,
+        },
+        relmse_ratio_to_sobol: None,
+        relmse_ratio_interval: None,
+        runs: Vec::new(),
+        convergence: Vec::new(),
+        convergence_slope: None,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lowdisc_image::error_metrics;
-
-    fn result(name: &str, relmse: f64) -> SamplerResult {
-        let m = MeanSd {
-            mean: relmse,
-            sd: 0.0,
-        };
-        SamplerResult {
-            name: name.into(),
-            description: String::new(),
-            deterministic: false,
-            time_s: m,
-            mse: m,
-            relmse: m,
-            rmse: m,
-            mae: m,
-            srgb8: MetricSummary {
-                mse: m,
-                relmse: m,
-                rmse: m,
-                mae: m,
-            },
-            relmse_ratio_to_sobol: None,
-            runs: Vec::new(),
-            convergence: Vec::new(),
-            convergence_slope: None,
-        }
-    }
 
     #[test]
     fn ratios_are_to_sobol_and_absent_without_it() {
@@ -190,26 +176,5 @@ mod tests {
         let mut w = vec![result("paper", 0.919)];
         fill_ratios(&mut w);
         assert_eq!(w[0].relmse_ratio_to_sobol, None);
-    }
-
-    #[test]
-    fn summary_of_two_hand_computed_runs() {
-        // Test images against a reference of 1s: errors 0.5 and 1.5 in every
-        // channel of a 1x1 image, then 1.0 everywhere.
-        let r = RgbImage::filled(1, 2, [1.0; 3]).unwrap();
-        let a = RgbImage::from_pixels(1, 2, vec![[1.5; 3], [2.5; 3]]).unwrap();
-        let b = RgbImage::filled(1, 2, [2.0; 3]).unwrap();
-        let ea = error_metrics(&a, &r).unwrap().linear;
-        let eb = error_metrics(&b, &r).unwrap().linear;
-        // a: MSE (0.25 + 2.25)/2 = 1.25, MAE 1.0; b: MSE 1, MAE 1.
-        assert!((ea.mse - 1.25).abs() < 1e-12 && (ea.mae - 1.0).abs() < 1e-12);
-        assert!((eb.mse - 1.0).abs() < 1e-12);
-        // relMSE of b: 1 / (1 + 0.01).
-        assert!((eb.relmse - 1.0 / 1.01).abs() < 1e-9);
-        let s = MetricSummary::of(&[ea, eb]);
-        assert!((s.mse.mean - 1.125).abs() < 1e-12);
-        // sd of {1.25, 1}: |1.25 - 1| / sqrt(2).
-        assert!((s.mse.sd - 0.25 / 2f64.sqrt()).abs() < 1e-12);
-        assert!((s.mae.mean - 1.0).abs() < 1e-12 && s.mae.sd.abs() < 1e-12);
     }
 }

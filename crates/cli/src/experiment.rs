@@ -1,0 +1,181 @@
+//! `lowdisc experiment`: the paper's experiment in one command.
+//!
+//! The arguments ([`ExperimentArgs`]) are turned into a
+//! [`lowdisc_experiment::ExperimentConfig`] (presets `--quick` and
+//! `--paper`, defaults of the convergence series) and handed to
+//! [`lowdisc_experiment::run`], which does the work and writes the report
+//! folder; the progress it reports is printed on stderr unless `--quiet`.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use clap::Args;
+use lowdisc::catalog::SamplerConfig;
+use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig};
+
+use crate::parse;
+use crate::progress::Reporter;
+
+/// The long help of `experiment`.
+pub const LONG_ABOUT: &str = "\
+Reproduce the paper's experiment: render a scene with each sampler --runs\n\
+times (seeds 0..runs), compare with a converged, cached reference, and write\n\
+report.md, report.html, results.json and the images to --out.\n\
+\n\
+Without SCENE a built-in scene is used: rough gold and aluminium spheres,\n\
+car-paint-like coated shapes on a diffuse ground under a procedural sky with\n\
+a sun (no downloads). Defaults: 256x144, 16 spp, 3 runs, reference 1024 spp;\n\
+convergence from 1 to 1024 spp at half the resolution per side against its\n\
+own 8192-spp reference. --paper: 1280x720, 16 spp, 10 runs, reference 4096\n\
+spp, convergence to 1024 spp at 640x360. --quick: 32x32, 4 spp, 2 runs,\n\
+reference 64 spp, convergence up to 8 spp at 32x32 (for tests).";
+
+/// The arguments of `experiment`.
+#[derive(Debug, Args)]
+pub struct ExperimentArgs {
+    /// A pbrt-v4 scene file (omit for the built-in scene).
+    scene: Option<PathBuf>,
+    /// Samplers to compare, comma-separated.
+    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS)]
+    samplers: Vec<String>,
+    /// Samples per pixel of every compared render [default: 16; --quick: 4].
+    #[arg(long, value_name = "N")]
+    spp: Option<u32>,
+    /// Renders per sampler, seeds 0..runs [default: 3; --quick: 2; --paper: 10].
+    #[arg(long, value_name = "N")]
+    runs: Option<u32>,
+    /// Image resolution [default: 256x144; --quick: 32x32; --paper: 1280x720].
+    #[arg(long, value_name = "WxH")]
+    res: Option<String>,
+    /// Samples per pixel of the reference [default: 1024; --quick: 64; --paper: 4096].
+    #[arg(long, value_name = "N")]
+    ref_spp: Option<u32>,
+    /// Largest spp of the convergence plot, a power of two [default: 1024; --quick: 8].
+    #[arg(long, value_name = "N")]
+    conv_max: Option<u32>,
+    /// Resolution of the convergence series [default: half of --res per side; --quick: --res].
+    #[arg(long, value_name = "WxH")]
+    conv_res: Option<String>,
+    /// Samples per pixel of the convergence series' reference [default: 8 x --conv-max;
+    /// --quick: --ref-spp].
+    #[arg(long, value_name = "N")]
+    conv_ref_spp: Option<u32>,
+    /// Environment map (lat-long 2:1 or equal-area square): replaces the built-in
+    /// sky, or every image-based infinite light of a scene file (pbrt-v4 scenes
+    /// often ship without their map) [default: none].
+    #[arg(long, value_name = "FILE")]
+    envmap: Option<PathBuf>,
+    /// Paper permutation threshold of the paper's samplers (renders and point figure).
+    #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
+    threshold: f64,
+    /// Maximum path depth.
+    #[arg(long, value_name = "D", default_value_t = 5)]
+    maxdepth: u32,
+    /// Worker threads [default: all cores].
+    #[arg(long, value_name = "T")]
+    threads: Option<usize>,
+    /// Output folder (created if missing).
+    #[arg(long, value_name = "DIR", default_value = "experiment")]
+    out: PathBuf,
+    /// The paper's settings: 1280x720, 16 spp, 10 runs, reference 4096 spp.
+    #[arg(long, conflicts_with = "quick")]
+    paper: bool,
+    /// Tiny settings for tests: 32x32, 4 spp, 2 runs, reference 64 spp.
+    #[arg(long)]
+    quick: bool,
+    /// No progress, estimate or summary on stderr.
+    #[arg(long, short = 'q')]
+    quiet: bool,
+}
+
+impl ExperimentArgs {
+    /// Checks every argument and builds the configuration.
+    pub fn into_config(self) -> Result<Experiment> {
+        let (res, spp, runs, ref_spp, conv_max) = if self.quick {
+            ([32, 32], 4, 2, 64, 8)
+        } else if self.paper {
+            ([1280, 720], 16, 10, 4096, 1024)
+        } else {
+            ([256, 144], 16, 3, 1024, 1024)
+        };
+        let mut samplers = Vec::new();
+        for name in self.samplers.iter().filter(|s| !s.trim().is_empty()) {
+            let s = parse::sampler_name(name)?;
+            if !samplers.contains(&s) {
+                samplers.push(s);
+            }
+        }
+        let resolution = match self.res.as_deref() {
+            Some(text) => {
+                let r = parse::resolution(text)?;
+                if r[0] > 16_384 || r[1] > 16_384 {
+                    bail!("--res `{text}` is too large: each side must be at most 16384 pixels");
+                }
+                r
+            }
+            None => res,
+        };
+        let conv_res = match self.conv_res.as_deref() {
+            Some(text) => {
+                let r = parse::resolution(text)?;
+                if r[0] > 16_384 || r[1] > 16_384 {
+                    bail!(
+                        "--conv-res `{text}` is too large: each side must be at most 16384 pixels"
+                    );
+                }
+                r
+            }
+            // --quick keeps one resolution (and so one reference).
+            None if self.quick => resolution,
+            None => resolution.map(|v| (v / 2).max(1)),
+        };
+        let spp = self.spp.unwrap_or(spp);
+        let runs = self.runs.unwrap_or(runs);
+        let ref_spp = self.ref_spp.unwrap_or(ref_spp);
+        let conv_max = self.conv_max.unwrap_or(conv_max);
+        let conv_ref_spp = match self.conv_ref_spp {
+            Some(n) => n,
+            None if conv_res == resolution && self.quick => ref_spp,
+            None => 8 * conv_max,
+        };
+        let config = ExperimentConfig {
+            scene: self.scene,
+            samplers,
+            spp,
+            runs,
+            resolution,
+            ref_spp,
+            conv_max,
+            conv_res,
+            conv_ref_spp,
+            envmap: self.envmap,
+            threshold: parse::threshold(self.threshold)?,
+            max_depth: self.maxdepth,
+            threads: self.threads,
+            out: self.out,
+            command: std::env::args().collect(),
+        };
+        config.validate()?;
+        Ok(Experiment {
+            config,
+            quiet: self.quiet,
+        })
+    }
+}
+
+/// A validated `experiment` invocation.
+#[derive(Debug, Clone)]
+pub struct Experiment {
+    /// What to run.
+    config: ExperimentConfig,
+    /// No progress, estimate or summary on stderr.
+    quiet: bool,
+}
+
+/// Runs the experiment, printing its progress and a summary unless `--quiet`.
+pub fn run(experiment: &Experiment) -> Result<()> {
+    let reporter = Reporter::new(experiment.quiet);
+    let outcome = lowdisc_experiment::run(&experiment.config, &reporter)?;
+    reporter.summary(&outcome.files);
+    Ok(())
+}
