@@ -4,13 +4,13 @@
 //! sampler `runs` times (seeds `0..runs`), compares every render with a
 //! converged reference and writes a report folder. The `lowdisc experiment`
 //! command is a thin front end; tests, benches and other programs call
-//! [`run`] with an [`ExperimentConfig`] and a [`Progress`] observer.
+//! [`run()`] with an [`ExperimentConfig`] and a [`Progress`] observer.
 //!
 //! Modules, in the order a run uses them:
 //! - [`config`]: the validated settings of one experiment;
 //! - [`scene`]: the built-in scene and its procedural sky;
 //! - [`plan`]: the samples a run will render and the estimate of its time;
-//! - [`reference`]: the converged reference render, cached on disk;
+//! - [`reference`](mod@reference): the converged reference render, cached on disk;
 //! - [`run`](mod@run): the repeated renders of every sampler and their convergence series;
 //! - [`sweep`]: the threshold sweep of the paper's method;
 //! - [`metrics`]: the error metrics of one render and their summary over runs;
