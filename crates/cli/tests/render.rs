@@ -11,6 +11,17 @@ use lowdisc::catalog::SamplerName;
 use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
 
+/// `path` is a PNG of `size` whose mean is that of a lit box, neither black
+/// nor white.
+fn assert_lit_png(path: &std::path::Path, size: (usize, usize)) {
+    let bytes = std::fs::read(path).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let image = lowdisc_image::read_image(path).unwrap();
+    assert_eq!((image.width(), image.height()), size);
+    let m = mean(&image);
+    assert!(m > 0.05 && m < 0.95, "{}: mean {m}", path.display());
+}
+
 /// Mean of every channel of every pixel.
 fn mean(image: &lowdisc_image::RgbImage) -> f64 {
     let sum: f64 = image.pixels().iter().flatten().map(|&v| f64::from(v)).sum();
@@ -32,15 +43,7 @@ fn renders_the_cornell_box_to_png_and_exr() {
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stderr}");
-    let bytes = std::fs::read(&png).unwrap();
-    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
-    let image = lowdisc_image::read_image(&png).unwrap();
-    assert_eq!((image.width(), image.height()), (32, 32));
-    let m = mean(&image);
-    assert!(
-        m > 0.05 && m < 0.95,
-        "a lit box, neither black nor white: {m}"
-    );
+    assert_lit_png(&png, (32, 32));
     let exr = dir.join("tmp.exr");
     let out = lowdisc(&[
         "render",
@@ -163,15 +166,7 @@ fn renders_the_shared_cornell_box_scene_file() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     // 32x32 pixels at 1 spp: 1024 samples.
     assert!(stdout.contains("samples           1024"), "{stdout}");
-    let bytes = std::fs::read(&png).unwrap();
-    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
-    let image = lowdisc_image::read_image(&png).unwrap();
-    assert_eq!((image.width(), image.height()), (32, 32));
-    let m = mean(&image);
-    assert!(
-        m > 0.05 && m < 0.95,
-        "a lit box, neither black nor white: {m}"
-    );
+    assert_lit_png(&png, (32, 32));
 }
 
 #[test]
