@@ -170,20 +170,12 @@ fn bad_arguments_fail_with_one_line() {
 
 #[test]
 fn scene_file_with_a_substituted_environment_map() {
-    let shared = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes"
-    ));
-    let scene = shared.join("bitterli-material-testball/material-testball.pbrt");
-    let sky = shared.join("envmaps/polyhaven-venice_sunset_1k.hdr");
-    if !scene.is_file() || !sky.is_file() {
-        println!(
-            "skipped: {} or {} is absent",
-            scene.display(),
-            sky.display()
-        );
+    let (Some(scene), Some(sky)) = (
+        shared_scenes::file("bitterli-material-testball/material-testball.pbrt"),
+        shared_scenes::file("envmaps/polyhaven-venice_sunset_1k.hdr"),
+    ) else {
         return;
-    }
+    };
     let dir = temp_dir("experiment-scene");
     let out = dir.join("out");
     let o = lowdisc(&[

@@ -1,10 +1,32 @@
 //! `lowdisc render` end to end: the built-in Cornell box and the shared
-//! pbrt-v4 Cornell box file render to PNG and EXR; bad input (including bad
-//! scene files) exits non-zero with one `error:` line and no panic.
+//! pbrt-v4 Cornell box file render to PNG and EXR (read back: size, and the
+//! EXR's mean equals the library's render of the same options); bad input
+//! (including bad scene files) exits non-zero with one `error:` line and no
+//! panic.
 
 mod common;
 
 use common::{lowdisc, temp_dir};
+use lowdisc::catalog::SamplerName;
+use lowdisc_render::cornell::cornell_box;
+use lowdisc_render::render::{NoProgress, RenderOptions, render};
+
+/// `path` is a PNG of `size` whose mean is that of a lit box, neither black
+/// nor white.
+fn assert_lit_png(path: &std::path::Path, size: (usize, usize)) {
+    let bytes = std::fs::read(path).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let image = lowdisc_image::read_image(path).unwrap();
+    assert_eq!((image.width(), image.height()), size);
+    let m = mean(&image);
+    assert!(m > 0.05 && m < 0.95, "{}: mean {m}", path.display());
+}
+
+/// Mean of every channel of every pixel.
+fn mean(image: &lowdisc_image::RgbImage) -> f64 {
+    let sum: f64 = image.pixels().iter().flatten().map(|&v| f64::from(v)).sum();
+    sum / (3 * image.pixels().len()) as f64
+}
 
 #[test]
 fn renders_the_cornell_box_to_png_and_exr() {
@@ -21,8 +43,7 @@ fn renders_the_cornell_box_to_png_and_exr() {
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stderr}");
-    let bytes = std::fs::read(&png).unwrap();
-    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert_lit_png(&png, (32, 32));
     let exr = dir.join("tmp.exr");
     let out = lowdisc(&[
         "render",
@@ -50,6 +71,22 @@ fn renders_the_cornell_box_to_png_and_exr() {
     assert!(stdout.contains("BVH"), "{stdout}");
     let bytes = std::fs::read(&exr).unwrap();
     assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01], "EXR magic");
+    let image = lowdisc_image::read_image(&exr).unwrap();
+    assert_eq!((image.width(), image.height()), (16, 8));
+    // The command's defaults (zsobol, seed 0, maxdepth 5) in the library.
+    let expected = render(
+        &cornell_box([16, 8]).unwrap(),
+        &RenderOptions::new(SamplerName::ZSobol, 0, 2),
+        &NoProgress,
+    )
+    .unwrap();
+    let want = expected.mean().iter().sum::<f64>() / 3.0;
+    assert!(want > 0.01, "{want}");
+    assert!(
+        (mean(&image) - want).abs() < 1e-3 * want,
+        "{} vs {want}",
+        mean(&image)
+    );
     // No temporary files are left next to the output.
     let names: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
@@ -102,16 +139,7 @@ fn bad_input_is_a_clean_error() {
 
 /// The shared scene directory, or `None` (with a printed message) when absent.
 fn shared_scenes() -> Option<std::path::PathBuf> {
-    let dir = std::path::PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes"
-    ));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("skipped: {} is absent", dir.display());
-        None
-    }
+    shared_scenes::existing(shared_scenes::dir())
 }
 
 #[test]
@@ -138,8 +166,7 @@ fn renders_the_shared_cornell_box_scene_file() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     // 32x32 pixels at 1 spp: 1024 samples.
     assert!(stdout.contains("samples           1024"), "{stdout}");
-    let bytes = std::fs::read(&png).unwrap();
-    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert_lit_png(&png, (32, 32));
 }
 
 #[test]

@@ -6,16 +6,7 @@ use std::path::{Path, PathBuf};
 use lowdisc_image::{ReadOptions, crop, read_image, read_image_with, stats};
 
 fn scenes() -> Option<PathBuf> {
-    let dir = PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes"
-    ));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("skipping: scene folder {} not found", dir.display());
-        None
-    }
+    shared_scenes::existing(shared_scenes::dir())
 }
 
 fn files_with_extension(dir: &Path, ext: &str) -> Vec<PathBuf> {
@@ -32,10 +23,10 @@ fn radiance_hdr_envmaps_load() {
     let Some(root) = scenes() else { return };
     let maps = files_with_extension(&root.join("envmaps"), "hdr");
     if maps.is_empty() {
-        println!(
-            "skipping: no .hdr files in {}",
+        shared_scenes::skip(&format!(
+            "no .hdr files in {}",
             root.join("envmaps").display()
-        );
+        ));
         return;
     }
     for path in maps {
@@ -87,10 +78,10 @@ fn exr_envmaps_load() {
     let Some(root) = scenes() else { return };
     let maps = files_with_extension(&root.join("envmaps"), "exr");
     if maps.is_empty() {
-        println!(
-            "skipping: no .exr files in {}",
+        shared_scenes::skip(&format!(
+            "no .exr files in {}",
             root.join("envmaps").display()
-        );
+        ));
         return;
     }
     for path in maps {
@@ -114,7 +105,7 @@ fn classroom_skydome_pfm_and_textures_load() {
     let textures = root.join("bitterli-classroom/textures");
     let sky = textures.join("Skydome.pfm");
     if !sky.is_file() {
-        println!("skipping: {} not found", sky.display());
+        shared_scenes::skip(&format!("{} is absent", sky.display()));
         return;
     }
     let img = read_image(&sky).unwrap_or_else(|e| panic!("{e}"));
@@ -144,7 +135,7 @@ fn killeroos_png_texture_loads() {
     let Some(root) = scenes() else { return };
     let path = root.join("killeroos/textures/lines.png");
     if !path.is_file() {
-        println!("skipping: {} not found", path.display());
+        shared_scenes::skip(&format!("{} is absent", path.display()));
         return;
     }
     let img = read_image(&path).unwrap_or_else(|e| panic!("{e}"));

@@ -1,7 +1,6 @@
 //! Truncated copies of files of every format give an error, never a panic.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::path::PathBuf;
 
 use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, WriteOptions, decode_image, encode_image};
 
@@ -71,10 +70,7 @@ fn own_files_of_every_written_format() {
 
 #[test]
 fn real_scene_files() {
-    let root = PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes"
-    ));
+    let root = shared_scenes::dir();
     let files = [
         (
             "envmaps/pbrt-v4-ganesha-sky-equiarea.exr",
@@ -103,7 +99,7 @@ fn real_scene_files() {
     for (rel, format, tail) in files {
         let path = root.join(rel);
         let Ok(bytes) = std::fs::read(&path) else {
-            println!("skipping: {} not found", path.display());
+            shared_scenes::skip(&format!("{} is absent", path.display()));
             continue;
         };
         check(rel, &bytes, format, tail);

@@ -21,6 +21,14 @@
 //!   both orders.
 //! * Every random choice takes an explicit seed.
 //!
+//! ## Modules
+//! * sequences: [`sobol`] (matrices, points, Gray-code batches), [`halton`],
+//!   [`stratified`], [`independent`];
+//! * randomizations: [`scramble`] (digital shift, Owen, fast Owen), [`paper`]
+//!   (Song & Ro's permutation), [`hash`] and [`pcg`] (seeded randomness);
+//! * [`pixel`]: the pixel samplers a renderer drives; [`catalog`]: every
+//!   sampler by name, built from one configuration; [`error`].
+//!
 //! The crate is `no_std` (with `alloc`) when the default `std` feature is off.
 #![cfg_attr(not(feature = "std"), no_std)]
 

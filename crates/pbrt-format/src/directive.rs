@@ -63,6 +63,42 @@ pub enum Directive {
 }
 
 impl Directive {
+    /// The directive's parameter list, for the directives that have one.
+    pub fn params(&self) -> Option<&ParamSet> {
+        self.strings_and_params().1
+    }
+
+    /// The directive's quoted string arguments, in file order, and its
+    /// parameter list (empty and `None` for directives whose arguments are
+    /// numbers, a keyword or a single parameter).
+    pub fn strings_and_params(&self) -> (Vec<&str>, Option<&ParamSet>) {
+        use Directive as D;
+        match self {
+            D::ColorSpace(n)
+            | D::CoordinateSystem(n)
+            | D::CoordSysTransform(n)
+            | D::NamedMaterial(n)
+            | D::ObjectBegin(n)
+            | D::ObjectInstance(n) => (vec![n], None),
+            D::MediumInterface(i, o) => (vec![i, o], None),
+            D::Texture(n, t, c, p) => (vec![n, t, c], Some(p)),
+            D::Camera(n, p)
+            | D::Film(n, p)
+            | D::Sampler(n, p)
+            | D::Integrator(n, p)
+            | D::PixelFilter(n, p)
+            | D::Accelerator(n, p)
+            | D::MakeNamedMedium(n, p)
+            | D::Attribute(n, p)
+            | D::Shape(n, p)
+            | D::Material(n, p)
+            | D::MakeNamedMaterial(n, p)
+            | D::LightSource(n, p)
+            | D::AreaLightSource(n, p) => (vec![n], Some(p)),
+            _ => (Vec::new(), None),
+        }
+    }
+
     /// The directive's keyword as written in scene files (for messages).
     pub fn keyword(&self) -> &'static str {
         match self {

@@ -193,27 +193,10 @@ impl Formatter {
             D::ActiveTransform(w) => {
                 let _ = write!(self.out, "{kw} {}", w.keyword());
             }
-            D::ColorSpace(n)
-            | D::CoordinateSystem(n)
-            | D::CoordSysTransform(n)
-            | D::NamedMaterial(n)
-            | D::ObjectBegin(n)
-            | D::ObjectInstance(n) => self.named(kw, &[n], &no_params),
-            D::MediumInterface(i, o) => self.named(kw, &[i, o], &no_params),
-            D::Texture(n, t, c, p) => self.named(kw, &[n, t, c], p),
-            D::Camera(n, p)
-            | D::Film(n, p)
-            | D::Sampler(n, p)
-            | D::Integrator(n, p)
-            | D::PixelFilter(n, p)
-            | D::Accelerator(n, p)
-            | D::MakeNamedMedium(n, p)
-            | D::Attribute(n, p)
-            | D::Shape(n, p)
-            | D::Material(n, p)
-            | D::MakeNamedMaterial(n, p)
-            | D::LightSource(n, p)
-            | D::AreaLightSource(n, p) => self.named(kw, &[n], p),
+            named => {
+                let (strings, params) = named.strings_and_params();
+                self.named(kw, &strings, params.unwrap_or(&no_params));
+            }
         }
         self.out.push('\n');
         if matches!(

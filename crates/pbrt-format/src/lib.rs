@@ -8,6 +8,12 @@
 //! provides two other targets, [`Recorder`] (keeps every directive) and
 //! [`Formatter`] (prints the scene back as text).
 //!
+//! Modules: `token` and `stream` (tokenizer and argument reader), `parser`
+//! (directives, `Include`/`Import`), `directive` ([`Directive`], [`Recorder`]),
+//! `target` ([`ParserTarget`]), `param` and `paramset` (typed parameters and
+//! lookups that remember use), `error` ([`ParseError`], [`Loc`]), `warnings`
+//! ([`Warnings`]), `format` ([`Formatter`]).
+//!
 //! Syntax errors are [`ParseError`]s with an [`ErrorKind`] and a location; the
 //! parser never panics on any input. [`Warnings`] collects deduplicated warnings,
 //! and [`ParamSet::warn_unused`] reports parameters a builder did not use.

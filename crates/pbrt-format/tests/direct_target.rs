@@ -2,7 +2,7 @@
 //! graphics-state tracker that matches on the [`Directive`], checks block
 //! nesting, keeps the current material, and warns about unused parameters.
 
-use pbrt_format::{Directive, ErrorKind, Loc, ParamSet, ParseError, ParserTarget, TargetResult};
+use pbrt_format::{Directive, ErrorKind, Loc, ParseError, ParserTarget, TargetResult};
 use pbrt_format::{Warnings, parse_str};
 
 #[derive(Default)]
@@ -18,10 +18,6 @@ impl Tracker {
     fn ignore(&mut self, loc: &Loc, what: &str) {
         self.warnings
             .warn_once(loc, format!("{what} is not supported"));
-    }
-    fn ignore_params(&mut self, loc: &Loc, what: &str, params: ParamSet) {
-        params.warn_unused(what, &mut self.warnings);
-        self.ignore(loc, what)
     }
 }
 
@@ -46,24 +42,21 @@ impl ParserTarget for Tracker {
                     .push((p.float_or("radius", 1.0), self.material.clone()));
                 p.warn_unused("Shape \"sphere\"", &mut self.warnings);
             }
-            D::Shape(ty, p) => self.ignore_params(loc, &format!("Shape \"{ty}\""), p),
+            D::Shape(ty, p) => {
+                let what = format!("Shape \"{ty}\"");
+                p.warn_unused(&what, &mut self.warnings);
+                self.ignore(loc, &what)
+            }
             D::Material(ty, p) => {
                 p.warn_unused(&format!("Material \"{ty}\""), &mut self.warnings);
                 self.material = ty;
             }
-            D::Camera(_, p)
-            | D::Film(_, p)
-            | D::Sampler(_, p)
-            | D::Integrator(_, p)
-            | D::PixelFilter(_, p)
-            | D::Accelerator(_, p)
-            | D::MakeNamedMedium(_, p)
-            | D::Attribute(_, p)
-            | D::MakeNamedMaterial(_, p)
-            | D::Texture(_, _, _, p)
-            | D::LightSource(_, p)
-            | D::AreaLightSource(_, p) => self.ignore_params(loc, keyword, p),
-            _ => self.ignore(loc, keyword),
+            other => {
+                if let Some(p) = other.params() {
+                    p.warn_unused(keyword, &mut self.warnings);
+                }
+                self.ignore(loc, keyword)
+            }
         }
         Ok(())
     }

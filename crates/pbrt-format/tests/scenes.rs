@@ -3,7 +3,7 @@
 
 mod common;
 
-use pbrt_format::{Directive, ParamSet, Recorder, parse_file};
+use pbrt_format::{Directive, Recorder, parse_file};
 
 #[derive(Debug, Default, PartialEq, Eq)]
 struct Counts {
@@ -16,26 +16,6 @@ struct Counts {
     includes: usize,
     calls: usize,
     values: usize,
-}
-
-fn params_of(c: &Directive) -> Option<&ParamSet> {
-    match c {
-        Directive::Camera(_, p)
-        | Directive::Film(_, p)
-        | Directive::Sampler(_, p)
-        | Directive::Integrator(_, p)
-        | Directive::PixelFilter(_, p)
-        | Directive::Accelerator(_, p)
-        | Directive::MakeNamedMedium(_, p)
-        | Directive::Attribute(_, p)
-        | Directive::Shape(_, p)
-        | Directive::Material(_, p)
-        | Directive::MakeNamedMaterial(_, p)
-        | Directive::Texture(_, _, _, p)
-        | Directive::LightSource(_, p)
-        | Directive::AreaLightSource(_, p) => Some(p),
-        _ => None,
-    }
 }
 
 fn count(rec: &Recorder) -> Counts {
@@ -51,7 +31,7 @@ fn count(rec: &Recorder) -> Counts {
         values: rec
             .calls
             .iter()
-            .filter_map(|(c, _)| params_of(c))
+            .filter_map(|(c, _)| c.params())
             .flat_map(|p| p.iter())
             .map(|p| p.values.len())
             .sum(),

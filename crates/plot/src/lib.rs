@@ -17,6 +17,10 @@
 //! # Ok::<(), lowdisc_plot::Error>(())
 //! ```
 //!
+//! Modules: [`scatter`], [`mod@line`] and [`mod@heatmap`] (the charts), [`canvas`]
+//! (the drawing surface and saving), [`axis`] (ticks and labels), [`color`]
+//! (colour maps); `svg` and `raster` write the two formats.
+//!
 //! SVG is written by hand with real `<text>` elements. PNG is rasterised with
 //! `tiny-skia`, and text is drawn with `ab_glyph` from the Ubuntu Light and
 //! Hack fonts shipped inside the `epaint_default_fonts` crate, so PNG output

@@ -10,9 +10,6 @@ use lowdisc_render::geometry::{MeshData, ShapeSet, TriangleMesh};
 use lowdisc_render::math::{Point3, Ray, Transform, Vec3};
 use lowdisc_render::mesh::read_ply;
 use std::hint::black_box;
-use std::path::Path;
-
-const SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/scenes");
 
 /// A bumpy height-field grid of `2 n^2` triangles.
 fn generated(n: u32) -> MeshData {
@@ -35,7 +32,7 @@ fn generated(n: u32) -> MeshData {
 }
 
 fn ply_files() -> Vec<std::path::PathBuf> {
-    let dir = Path::new(SCENES).join("bmw-m6/geometry");
+    let dir = shared_scenes::dir().join("bmw-m6/geometry");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .map(|rd| rd.filter_map(|e| e.ok().map(|e| e.path())).collect())
         .unwrap_or_default();

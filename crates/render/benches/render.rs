@@ -15,9 +15,6 @@ use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{Progress, RenderOptions, render};
 use lowdisc_render::scene::Scene;
 use std::hint::black_box;
-use std::path::Path;
-
-const SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/scenes");
 
 fn options() -> RenderOptions {
     let mut opts = RenderOptions::default();
@@ -53,7 +50,7 @@ fn cornell(c: &mut Criterion) {
 }
 
 fn bmw(c: &mut Criterion) {
-    let dir = Path::new(SCENES);
+    let dir = shared_scenes::dir();
     let file = dir.join("bmw-m6/bmw-m6.pbrt");
     if !file.is_file() {
         println!("skipped bmw-m6: {} is absent", file.display());

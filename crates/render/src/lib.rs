@@ -1,14 +1,25 @@
-//! Physically based path tracer driven by lowdisc's pixel samplers.
+//! Physically based path tracer driven by lowdisc's pixel samplers, with
+//! pbrt-v4 scene loading.
 //!
-//! This crate currently holds the geometric foundations:
-//! * [`math`]: `f32` vectors, rays, boxes, transforms, frames, spherical helpers;
-//! * [`geometry`]: shapes (triangle meshes, spheres, disks, bilinear patch
-//!   meshes, Loop subdivision surfaces) with intersection and area sampling;
-//! * [`bvh`]: a binned-SAH bounding volume hierarchy (parallel build, compact
-//!   32-byte nodes, closest-hit and any-hit traversal);
-//! * [`accel`]: the scene's shapes plus their BVH, answering ray queries with
-//!   full surface hits;
-//! * [`mesh`]: PLY loading.
+//! **Entry points.** [`pbrt::load_pbrt_scene`] (a scene file) or
+//! [`cornell::cornell_box`] (the built-in scene) give a [`scene::Scene`];
+//! [`render::render`] renders it with [`render::RenderOptions`] (which hold the
+//! sampler's [`lowdisc::catalog::SamplerConfig`]) and returns the film, the
+//! image and counters. Every failure is an [`error::RenderError`].
+//!
+//! **Modules**, from the scene description down to the numbers:
+//!
+//! | layer | modules |
+//! |---|---|
+//! | scenes | [`pbrt`] (pbrt-v4 loader: graphics state, shapes, materials, textures, lights, options), [`cornell`] (built-in scene), [`scene`] (builder and the renderable scene) |
+//! | rendering | [`render`] (options, tiles, threads, progress; one camera sample), [`integrator`] (path tracer, sampler-dimension layout), [`camera`] (perspective camera), [`film`] (pixel sums, tiles, output), [`filter`] (pixel filters and their sampling) |
+//! | appearance | [`bsdf`] (BxDFs, materials, `mix`), [`texture`] (one generic texture, image maps, registry), [`light`] (point, spot, distant, area, infinite and image lights; light selection), [`spectrum`] (RGB and spectra reduced to it) |
+//! | geometry | [`geometry`] (triangles, spheres, disks, bilinear patches, Loop subdivision), [`accel`] (shapes plus BVH, full hits), [`bvh`] (binned-SAH build, traversal), [`mesh`] (PLY files) |
+//! | foundations | [`math`] (vectors, rays, boxes, transforms, frames), [`sampling`] (tabulated 1-D/2-D distributions), [`error`] (the crate's errors) |
+//!
+//! **Determinism.** Every random decision comes from the pixel sampler (or a
+//! seeded hash), tiles get their own sampler streams and are merged in order,
+//! so an image is bit-identical whatever the thread count.
 // `!(x > 0.0)` is used on purpose throughout: unlike `x <= 0.0` it is also
 // true for NaN, which is how bad input is rejected without panicking.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

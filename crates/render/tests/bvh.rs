@@ -2,13 +2,12 @@
 
 mod common;
 
-use common::{Rng, SCENES, random_ray};
+use common::{Rng, random_ray};
 use lowdisc_render::Accel;
 use lowdisc_render::bvh::{BuildOptions, Bvh, MAX_DEPTH, Node};
 use lowdisc_render::geometry::{Disk, MeshData, Prim, ShapeSet, Sphere, TriangleMesh};
 use lowdisc_render::math::{Bounds3, Point3, Ray, Transform, Vec3};
 use lowdisc_render::mesh::read_ply;
-use std::path::Path;
 
 fn soup(rng: &mut Rng, n: usize, size: f32, spread: f32) -> MeshData {
     let mut m = MeshData::default();
@@ -204,12 +203,9 @@ fn degenerate_inputs_build() {
 
 #[test]
 fn closest_hit_equals_brute_force_on_a_real_ply() {
-    let path = Path::new(SCENES).join("bmw-m6/geometry/mesh_00004.ply");
+    let path = shared_scenes::dir().join("bmw-m6/geometry/mesh_00004.ply");
     if !path.exists() {
-        println!(
-            "skipped: {} not found (shared scenes absent)",
-            path.display()
-        );
+        shared_scenes::skip(&format!("{} is absent", path.display()));
         return;
     }
     let data = read_ply(&path).unwrap();

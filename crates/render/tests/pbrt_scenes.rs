@@ -6,16 +6,14 @@ use lowdisc_render::pbrt::{LoadOptions, LoadedScene, SceneCounts, load_pbrt_scen
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
 use std::path::{Path, PathBuf};
 
-const SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/scenes");
-
 fn load(rel: &str, envmap: Option<&str>) -> Option<LoadedScene> {
-    let path = Path::new(SCENES).join(rel);
+    let path = shared_scenes::dir().join(rel);
     if !path.is_file() {
-        println!("skipping: {} is absent", path.display());
+        shared_scenes::skip(&format!("{} is absent", path.display()));
         return None;
     }
     let options = LoadOptions {
-        envmap_override: envmap.map(|e| Path::new(SCENES).join(e)),
+        envmap_override: envmap.map(|e| shared_scenes::dir().join(e)),
     };
     let loaded = load_pbrt_scene(&path, &options).unwrap_or_else(|e| panic!("{rel}: {e}"));
     for w in &loaded.warnings {
@@ -90,9 +88,12 @@ fn material_testball_with_envmap_override() {
 
 #[test]
 fn material_testball_without_envmap_names_the_missing_file() {
-    let path = Path::new(SCENES).join("bitterli-material-testball/material-testball.pbrt");
-    if !path.is_file() || path.with_file_name("textures/envmap.pfm").is_file() {
-        println!("skipping: scene absent or its envmap present");
+    let Some(path) = shared_scenes::file("bitterli-material-testball/material-testball.pbrt")
+    else {
+        return;
+    };
+    if path.with_file_name("textures/envmap.pfm").is_file() {
+        println!("SKIPPED: the test ball's own envmap is present");
         return;
     }
     let e = load_pbrt_scene(&path, &LoadOptions::default())

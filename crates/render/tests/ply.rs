@@ -2,7 +2,6 @@
 
 mod common;
 
-use common::SCENES;
 use lowdisc_render::Error;
 use lowdisc_render::geometry::MeshData;
 use lowdisc_render::math::{Point2, Point3, Vec3};
@@ -169,12 +168,9 @@ fn malformed_files_are_errors() {
 
 #[test]
 fn truncated_copies_of_a_real_ply_give_errors() {
-    let src = Path::new(SCENES).join("bmw-m6/geometry/mesh_00001.ply");
+    let src = shared_scenes::dir().join("bmw-m6/geometry/mesh_00001.ply");
     if !src.exists() {
-        println!(
-            "skipped: {} not found (shared scenes absent)",
-            src.display()
-        );
+        shared_scenes::skip(&format!("{} is absent", src.display()));
         return;
     }
     let full = std::fs::read(&src).unwrap();
@@ -205,12 +201,9 @@ fn truncated_copies_of_a_real_ply_give_errors() {
 
 #[test]
 fn bmw_m6_loads_with_pinned_counts() {
-    let dir = Path::new(SCENES).join("bmw-m6/geometry");
+    let dir = shared_scenes::dir().join("bmw-m6/geometry");
     let Ok(rd) = std::fs::read_dir(&dir) else {
-        println!(
-            "skipped: {} not found (shared scenes absent)",
-            dir.display()
-        );
+        shared_scenes::skip(&format!("{} is absent", dir.display()));
         return;
     };
     let mut files: Vec<_> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();

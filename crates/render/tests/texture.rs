@@ -267,12 +267,9 @@ fn registry_keeps_float_and_spectrum_apart() {
 
 #[test]
 fn scene_textures_load_when_present() {
-    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/scenes");
-    let path = std::path::Path::new(root).join("killeroos/textures/lines.png");
-    if !path.exists() {
-        println!("skipping: {} not found", path.display());
+    let Some(path) = shared_scenes::file("killeroos/textures/lines.png") else {
         return;
-    }
+    };
     let mut reg = TextureRegistry::new();
     let img = reg.load_image(&path, None).unwrap();
     let [w, h] = img.resolution();

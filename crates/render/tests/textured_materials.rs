@@ -359,11 +359,9 @@ fn loader_builds_textured_and_constant_materials() {
 
 #[test]
 fn shared_scenes_with_textures_get_textured_materials() {
-    let path = std::path::Path::new(common::SCENES).join("killeroos/killeroo-gold.pbrt");
-    if !path.is_file() {
-        println!("skipping: {} is absent", path.display());
+    let Some(path) = shared_scenes::file("killeroos/killeroo-gold.pbrt") else {
         return;
-    }
+    };
     let l = load_pbrt_scene(&path, &LoadOptions::default()).unwrap();
     assert!(
         l.scene.materials().iter().any(|m| !m.is_constant()),

@@ -9,16 +9,7 @@ use pbrt_format::{Directive, Recorder, parse_str};
 
 /// The shared scene directory, or `None` (with a message) when it is absent.
 pub fn scenes_dir() -> Option<PathBuf> {
-    let dir = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes"
-    ));
-    if dir.is_dir() {
-        Some(dir.to_path_buf())
-    } else {
-        println!("skipped: scene directory {} is absent", dir.display());
-        None
-    }
+    shared_scenes::existing(shared_scenes::dir())
 }
 
 /// Every `*.pbrt` file under `dir`, sorted.

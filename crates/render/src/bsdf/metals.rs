@@ -65,14 +65,10 @@ mod tests {
 
     #[test]
     fn table_matches_the_shared_spectra() {
-        let dir = concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../../shared/scenes/spectra"
-        );
-        if !std::path::Path::new(dir).is_dir() {
-            println!("skipping: shared scene spectra not found at {dir}");
+        let Some(dir) = shared_scenes::file("spectra") else {
             return;
-        }
+        };
+        let dir = dir.display();
         for (name, want) in NAMED_METALS {
             // "metal-Au-eta" -> "Au.eta.spd"
             let rest = name.strip_prefix("metal-").unwrap();

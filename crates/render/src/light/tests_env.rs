@@ -262,16 +262,7 @@ fn image_irradiance_matches_uniform_sampling_and_illuminance() {
 }
 
 fn scenes() -> Option<PathBuf> {
-    let dir = PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/scenes"
-    ));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("skipping: {} not found", dir.display());
-        None
-    }
+    shared_scenes::existing(shared_scenes::dir())
 }
 
 #[test]
@@ -291,7 +282,7 @@ fn real_environment_maps_are_normalised() {
     ] {
         let path = dir.join(name);
         if !path.is_file() {
-            println!("skipping {}: not found", path.display());
+            shared_scenes::skip(&format!("{} is absent", path.display()));
             continue;
         }
         let l = ImageInfiniteLight::from_file(&rot, &path, None, EnvLookup::Nearest, 1.0, None)

@@ -23,7 +23,7 @@ pub use options::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE, RenderOptions};
 
 use crate::camera::camera_sample;
 use crate::film::{Film, FilmTile, PixelBounds};
-use crate::integrator::PathStats;
+use crate::integrator::{PathIntegrator, PathStats};
 use crate::scene::Scene;
 use crate::spectrum::Rgb;
 use lowdisc::catalog::SamplerConfig;
@@ -233,18 +233,13 @@ fn render_tile(
     let mut sampler = sampler.with_stream(k);
     let mut stats = PathStats::default();
     let (integrator, seed) = (&opts.integrator, opts.sampler.seed);
-    let (camera, filter) = (scene.camera(), &scene.film().filter);
     let bounds: PixelBounds = film.bounds();
     let mut samples = 0;
-    for [x, y] in bounds.pixels() {
+    for pixel in bounds.pixels() {
         for s in 0..opts.sampler.spp {
-            sampler.start_pixel_sample([x as u32, y as u32], s, 0);
-            let u_film = sampler.get_pixel_2d();
-            let u_lens = sampler.get_2d();
-            let cs = camera_sample(filter, [x, y], u_film, u_lens);
-            let ray = camera.generate_ray_for(&cs);
-            let l: Rgb = integrator.li(scene, ray, &mut sampler, seed, &mut stats);
-            film.add_sample([x, y], l, cs.filter_weight);
+            let (l, weight) =
+                trace_camera_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats);
+            film.add_sample(pixel, l, weight);
             samples += 1;
         }
     }
@@ -253,4 +248,29 @@ fn render_tile(
         stats,
         samples,
     }
+}
+
+/// One camera sample, the path of every sample from the sampler to the film:
+/// starts sample `index` of `pixel` at dimension 0, draws the film position
+/// (`get_pixel_2d`) and the lens (`get_2d`), turns them into a camera ray
+/// through the pixel filter's importance sampling, and traces it with
+/// `integrator` (whose vertices draw [`crate::integrator::DIMS_PER_BOUNCE`]
+/// dimensions each). Returns the radiance and the filter weight the film
+/// adds it with.
+pub fn trace_camera_sample<S: PixelSampler>(
+    scene: &Scene,
+    integrator: &PathIntegrator,
+    sampler: &mut S,
+    pixel: [i32; 2],
+    index: u32,
+    bsdf_seed: u64,
+    stats: &mut PathStats,
+) -> (Rgb, f32) {
+    sampler.start_pixel_sample([pixel[0] as u32, pixel[1] as u32], index, 0);
+    let u_film = sampler.get_pixel_2d();
+    let u_lens = sampler.get_2d();
+    let cs = camera_sample(&scene.film().filter, pixel, u_film, u_lens);
+    let ray = scene.camera().generate_ray_for(&cs);
+    let l = integrator.li(scene, ray, sampler, bsdf_seed, stats);
+    (l, cs.filter_weight)
 }

@@ -10,7 +10,7 @@
 //! mesh, as in pbrt) becomes one [`DiffuseAreaLight`] in [`Scene::lights`];
 //! lights at infinity are preprocessed with the scene bounds.
 //!
-//! [`load_scene_file`] loads a pbrt-v4 file (through [`crate::pbrt`]) into a scene.
+//! Scene files are loaded by [`crate::pbrt`] (`load_pbrt_scene`, `load_scene_file`).
 
 use crate::accel::{Accel, Hit};
 use crate::bsdf::Material;

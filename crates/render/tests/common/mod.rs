@@ -3,9 +3,6 @@
 
 use lowdisc_render::math::{Point2, Point3, Ray, Vec3};
 
-/// Path of the shared scenes directory (may be absent).
-pub const SCENES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/scenes");
-
 /// SplitMix64: small, seeded, good enough for test inputs.
 pub struct Rng(u64);
 
