@@ -68,9 +68,12 @@ pub fn generate(spec: &PointSpec) -> Result<Values> {
     let values = match spec.sequence {
         Sequence::Sobol => {
             let r = sobol_randomize(&spec.scramble, spec.seed)?;
-            let words = sobol_words(spec, r, n, d);
             let mask = u32::MAX << (32 - spec.bits);
-            from_words(words, mask, spec.dtype)
+            match spec.dtype {
+                Dtype::F64 => Values::F64(sobol(spec, r, |w| lowdisc::to_f64(w & mask))),
+                Dtype::F32 => Values::F32(sobol(spec, r, |w| lowdisc::to_f32(w & mask))),
+                Dtype::U32 => Values::U32(sobol(spec, r, |w| w & mask)),
+            }
         }
         Sequence::Halton => {
             let kind = HaltonRandomize::from_name(&spec.scramble).ok_or_else(|| {
@@ -217,30 +220,41 @@ fn chunked<T: Send + Copy + Default>(
     out
 }
 
-/// The Sobol digit words of a checked request.
-fn sobol_words(spec: &PointSpec, r: Randomize, n: usize, d: usize) -> Vec<u32> {
-    let mut out = vec![0u32; n * d];
+/// The Sobol points of a checked request, each digit word converted by
+/// `convert` (chunk by chunk, so no array of words is kept).
+fn sobol<T: Send + Copy + Default>(
+    spec: &PointSpec,
+    r: Randomize,
+    convert: impl Fn(u32) -> T + Sync,
+) -> Vec<T> {
+    let (n, d) = (spec.n as usize, spec.d as usize);
+    let mut out = vec![T::default(); n * d];
     let per = chunk_points(d);
     out.par_chunks_mut(per * d)
         .enumerate()
         .for_each(|(c, block)| {
             // Checked: start + n <= 2^32 and d <= the table's dimensions.
             let first = (spec.start + (c * per) as u64) as u32;
+            let mut words = vec![0u32; block.len()];
             if spec.natural_order {
-                for (k, point) in block.chunks_exact_mut(d).enumerate() {
+                for (k, point) in words.chunks_exact_mut(d).enumerate() {
                     for (j, v) in point.iter_mut().enumerate() {
                         *v = sobol::sample(first + k as u32, j as u32);
                     }
                 }
             } else if let Ok(mut batch) = GrayCodeBatch::new(0, d as u32) {
                 batch.seek(first);
-                batch.fill(block);
+                batch.fill(&mut words);
             }
-            if r != Randomize::None {
+            if r == Randomize::None {
+                for (o, &w) in block.iter_mut().zip(&words) {
+                    *o = convert(w);
+                }
+            } else {
                 let mut cache = ScrambleCache::new(r);
-                for point in block.chunks_exact_mut(d) {
-                    for (j, v) in point.iter_mut().enumerate() {
-                        *v = cache.apply(*v, j as u32);
+                for (point, ws) in block.chunks_exact_mut(d).zip(words.chunks_exact(d)) {
+                    for (j, (o, &w)) in point.iter_mut().zip(ws).enumerate() {
+                        *o = convert(cache.apply(w, j as u32));
                     }
                 }
             }

@@ -138,3 +138,26 @@ fn generator_matrices_reproduce_the_points() {
     }
     assert!(sobol_matrices(0).is_err());
 }
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let s = spec(Sequence::Sobol, "owen", 20_000, 8);
+            let p = super::super::pixel::PixelSpec {
+                sampler: "zsobol".into(),
+                spp: 4,
+                resolution: [64, 64],
+                pixels: (0..4096).map(|k| [k % 64, k / 64]).collect(),
+                dims: 6,
+                seed: 2,
+            };
+            (words(&s), super::super::pixel::pixel_samples(&p).unwrap())
+        })
+    };
+    assert_eq!(run(1), run(3));
+}
