@@ -120,9 +120,11 @@ fn columns(points: &PointSet) -> Vec<Vec<f64>> {
     (0..points.dims()).map(|j| points.column(j)).collect()
 }
 
-fn evaluate(method: L2Method, cols: &[Vec<f64>], n: usize) -> f64 {
+/// The discrepancy of the `n` points in `cols`, normalised as if there were
+/// `count` points (`count = n` except for [`l2_discrepancy_iterative`]).
+fn evaluate(method: L2Method, cols: &[Vec<f64>], n: usize, count: usize) -> f64 {
     let d = cols.len();
-    let nf = n as f64;
+    let nf = count as f64;
     let single = pairs::compensated_sum((0..n).map(|i| {
         cols.iter()
             .map(|c| single_factor(method, c[i]))
@@ -143,7 +145,13 @@ fn evaluate(method: L2Method, cols: &[Vec<f64>], n: usize) -> f64 {
 
 /// One L2-type discrepancy, in SciPy's convention (see [`L2Method::is_squared`]).
 pub fn l2_discrepancy(points: &PointSet, method: L2Method) -> f64 {
-    evaluate(method, &columns(points), points.len())
+    evaluate(method, &columns(points), points.len(), points.len())
+}
+
+/// [`l2_discrepancy`] normalised as if the set had one more point (SciPy's
+/// `iterative=True`: the start of `update_discrepancy`, which adds it).
+pub fn l2_discrepancy_iterative(points: &PointSet, method: L2Method) -> f64 {
+    evaluate(method, &columns(points), points.len(), points.len() + 1)
 }
 
 /// All four L2-type discrepancies (the columns are extracted once).
@@ -151,9 +159,9 @@ pub fn l2_discrepancies(points: &PointSet) -> L2Discrepancies {
     let cols = columns(points);
     let n = points.len();
     L2Discrepancies {
-        l2_star: evaluate(L2Method::L2Star, &cols, n),
-        cd: evaluate(L2Method::Centered, &cols, n),
-        wd: evaluate(L2Method::WrapAround, &cols, n),
-        md: evaluate(L2Method::Mixture, &cols, n),
+        l2_star: evaluate(L2Method::L2Star, &cols, n, n),
+        cd: evaluate(L2Method::Centered, &cols, n, n),
+        wd: evaluate(L2Method::WrapAround, &cols, n, n),
+        md: evaluate(L2Method::Mixture, &cols, n, n),
     }
 }

@@ -29,7 +29,9 @@ pub use distance::{
     DistanceMetric, DistanceStats, distance_stats, min_distance, nearest_neighbour_distances,
 };
 pub use error::{MetricsError, Result};
-pub use l2::{L2Discrepancies, L2Method, l2_discrepancies, l2_discrepancy};
+pub use l2::{
+    L2Discrepancies, L2Method, l2_discrepancies, l2_discrepancy, l2_discrepancy_iterative,
+};
 pub use points::PointSet;
 pub use spectrum::{RadialSpectrum, radial_power_spectrum};
 pub use star::{

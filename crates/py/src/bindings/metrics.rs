@@ -1,0 +1,134 @@
+//! The metric functions of `lowdisc._lowdisc`: each takes a C-contiguous
+//! float64 array `(n, d)` and runs the engine with the GIL released.
+
+use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+use super::arrays::{contiguous_2d, engine_error, slice};
+use crate::engine::metrics::{self, BoundsRequest};
+
+/// A checked sample and its dimension count.
+fn sample<'py>(obj: &Bound<'py, PyAny>) -> PyResult<(PyReadonlyArray2<'py, f64>, usize)> {
+    let array = contiguous_2d::<f64>(obj, "sample")?;
+    let d = array.shape()[1];
+    Ok((array, d))
+}
+
+/// SciPy's L2-type discrepancy `method` of `sample`.
+#[pyfunction]
+fn discrepancy(
+    py: Python<'_>,
+    sample: &Bound<'_, PyAny>,
+    method: &str,
+    iterative: bool,
+) -> PyResult<f64> {
+    let (array, d) = self::sample(sample)?;
+    let x = slice(&array)?;
+    py.detach(|| metrics::discrepancy(x, d, method, iterative))
+        .map_err(engine_error)
+}
+
+/// The exact star discrepancy, refused above `max_work` estimated operations.
+#[pyfunction]
+fn star_discrepancy(py: Python<'_>, sample: &Bound<'_, PyAny>, max_work: f64) -> PyResult<f64> {
+    let (array, d) = self::sample(sample)?;
+    let x = slice(&array)?;
+    py.detach(|| metrics::star_discrepancy(x, d, max_work))
+        .map_err(engine_error)
+}
+
+/// The estimated operations of the exact star discrepancy of `n` points in `d`.
+#[pyfunction]
+fn star_work(n: usize, d: usize) -> f64 {
+    metrics::star_work(n, d)
+}
+
+/// Lower and upper star-discrepancy bounds and their methods.
+#[pyfunction]
+#[pyo3(signature = (sample, random_boxes, ta_iterations, ta_restarts, grid_cells, seed))]
+fn star_bounds(
+    py: Python<'_>,
+    sample: &Bound<'_, PyAny>,
+    random_boxes: Option<usize>,
+    ta_iterations: Option<usize>,
+    ta_restarts: Option<usize>,
+    grid_cells: Option<usize>,
+    seed: u64,
+) -> PyResult<(f64, f64, String, String)> {
+    let (array, d) = self::sample(sample)?;
+    let x = slice(&array)?;
+    let request = BoundsRequest {
+        random_boxes,
+        ta_iterations,
+        ta_restarts,
+        grid_cells,
+        seed,
+    };
+    let b = py
+        .detach(|| metrics::star_bounds(x, d, &request))
+        .map_err(engine_error)?;
+    Ok((b.lower, b.upper, b.lower_method, b.upper_method))
+}
+
+/// The smallest distance between two points under `metric`.
+#[pyfunction]
+fn min_distance(py: Python<'_>, sample: &Bound<'_, PyAny>, metric: &str) -> PyResult<f64> {
+    let (array, d) = self::sample(sample)?;
+    let x = slice(&array)?;
+    py.detach(|| metrics::min_distance(x, d, metric))
+        .map_err(engine_error)
+}
+
+/// Each point's distance to its nearest other point.
+#[pyfunction]
+fn nearest_neighbour_distances<'py>(
+    py: Python<'py>,
+    sample: &Bound<'py, PyAny>,
+    metric: &str,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
+    let (array, d) = self::sample(sample)?;
+    let x = slice(&array)?;
+    let v = py
+        .detach(|| metrics::nearest_neighbour_distances(x, d, metric))
+        .map_err(engine_error)?;
+    Ok(PyArray1::from_vec(py, v))
+}
+
+/// Ring radii, mean power and frequency counts of a radial spectrum.
+type Spectrum<'py> = (
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<u64>>,
+);
+
+/// The radial power spectrum: (radii, power, counts).
+#[pyfunction]
+fn power_spectrum<'py>(
+    py: Python<'py>,
+    sample: &Bound<'py, PyAny>,
+    max_frequency: usize,
+) -> PyResult<Spectrum<'py>> {
+    let (array, d) = self::sample(sample)?;
+    let x = slice(&array)?;
+    let (radii, power, counts) = py
+        .detach(|| metrics::power_spectrum(x, d, max_frequency))
+        .map_err(engine_error)?;
+    let counts = counts.into_iter().map(|c| c as u64).collect();
+    Ok((
+        PyArray1::from_vec(py, radii),
+        PyArray1::from_vec(py, power),
+        PyArray1::from_vec(py, counts),
+    ))
+}
+
+/// Adds the metric functions to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(star_discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(star_work, m)?)?;
+    m.add_function(wrap_pyfunction!(star_bounds, m)?)?;
+    m.add_function(wrap_pyfunction!(min_distance, m)?)?;
+    m.add_function(wrap_pyfunction!(nearest_neighbour_distances, m)?)?;
+    m.add_function(wrap_pyfunction!(power_spectrum, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,97 @@
+//! The adapter between Python and lowdisc: every call into the `lowdisc` and
+//! `lowdisc-metrics` crates is here, behind plain-Rust functions that check
+//! their arguments first (so nothing below can panic on bad input).
+//!
+//! * [`points`]: sequences (Sobol, Halton, independent, stratified) as digit
+//!   words or floats, from any start index, in parallel chunks.
+//! * [`pixel`]: the renderer's pixel samplers, by catalog name.
+//! * [`metrics`]: discrepancies, distances and spectra of point arrays.
+//!
+//! Samplers and randomizations are chosen through lowdisc's catalog by name,
+//! so a change of lowdisc's types touches only this module.
+
+pub mod metrics;
+pub mod pixel;
+pub mod points;
+
+use core::fmt;
+
+/// Values per parallel work item: large enough to amortise a chunk's set-up,
+/// small enough to spread a request over all cores.
+pub(crate) const CHUNK_VALUES: usize = 1 << 16;
+
+/// What went wrong, and which Python exception it becomes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum EngineError {
+    /// A bad value (`ValueError`).
+    Value(String),
+    /// A value of the wrong kind (`TypeError`).
+    Type(String),
+}
+
+impl EngineError {
+    /// A `ValueError` with this message.
+    pub fn value(message: impl Into<String>) -> Self {
+        EngineError::Value(message.into())
+    }
+}
+
+impl fmt::Display for EngineError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            EngineError::Value(m) | EngineError::Type(m) => f.write_str(m),
+        }
+    }
+}
+
+impl From<lowdisc::Error> for EngineError {
+    fn from(e: lowdisc::Error) -> Self {
+        EngineError::Value(e.to_string())
+    }
+}
+
+impl From<lowdisc_metrics::MetricsError> for EngineError {
+    fn from(e: lowdisc_metrics::MetricsError) -> Self {
+        EngineError::Value(e.to_string())
+    }
+}
+
+/// Result of an engine call.
+pub type Result<T> = core::result::Result<T, EngineError>;
+
+/// The element type of an output array.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dtype {
+    /// `float64`: the digit word times `2^-32` (exact), or the sequence's
+    /// own double value (Halton, stratified).
+    F64,
+    /// `float32`: the 24 leading digits (never rounded up to 1).
+    F32,
+    /// `uint32`: the digit word `floor(x * 2^32)`.
+    U32,
+}
+
+impl Dtype {
+    /// Parses numpy's name of the type (`float64`, `float32`, `uint32`).
+    pub fn from_name(name: &str) -> Result<Dtype> {
+        match name {
+            "float64" => Ok(Dtype::F64),
+            "float32" => Ok(Dtype::F32),
+            "uint32" => Ok(Dtype::U32),
+            other => Err(EngineError::Type(format!(
+                "dtype must be float64, float32 or uint32, got {other}"
+            ))),
+        }
+    }
+}
+
+/// An output array's values, point-major.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Values {
+    /// `float64` values.
+    F64(Vec<f64>),
+    /// `float32` values.
+    F32(Vec<f32>),
+    /// `uint32` digit words.
+    U32(Vec<u32>),
+}

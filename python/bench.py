@@ -1,0 +1,122 @@
+"""Benchmark of lowdisc's Python package against scipy and qmcpy, run once
+on one machine; prints a Markdown table (not a test: nothing is asserted).
+
+    python python/bench.py            # the pinned versions: scripts/requirements-bench.txt
+
+Each figure is the best of ``--repeat`` runs (wall-clock, all cores allowed
+for every library).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import time
+
+import numpy as np
+
+import lowdisc
+from lowdisc import qmc as lqmc
+
+
+def best(fn, repeat):
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t)
+    return min(times)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--qmcpy-log2n", type=int, default=14,
+                        help="log2 of the points for the qmcpy NUS row (its NUS is a "
+                             "Python-level tree per dimension: 2^20 points took over "
+                             "14 minutes here)")
+    parser.add_argument("--tasks", default="sobol,qmcpy,discrepancy,star",
+                        help="comma-separated rows to run (default: all)")
+    args = parser.parse_args()
+    tasks = set(args.tasks.split(","))
+    from scipy.stats import qmc
+
+    try:
+        import qmcpy
+    except ImportError:
+        qmcpy = None
+    n, d = 2**20, 64
+    print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores; "
+          f"numpy {np.__version__}, scipy {__import__('scipy').__version__}, "
+          f"qmcpy {getattr(qmcpy, '__version__', 'not installed')}; best of {args.repeat}")
+    print()
+    print("| task | lowdisc | s | other | s | speed-up |")
+    print("|---|---|---:|---|---:|---:|", flush=True)
+
+    def row(task, ours_name, ours, theirs_name, theirs):
+        t_ours = best(ours, args.repeat)
+        t_theirs = best(theirs, args.repeat) if theirs is not None else None
+        ratio = f"{t_theirs / t_ours:.1f}x" if t_theirs else "-"
+        theirs_cell = f"{t_theirs:.3f}" if t_theirs else "-"
+        cells = (task, ours_name, f"{t_ours:.3f}", theirs_name, theirs_cell, ratio)
+        print("| " + " | ".join(cells) + " |", flush=True)
+
+    task = f"Sobol d={d}, 2^20 points"
+    if "sobol" in tasks:
+        sobol_rows(row, task, n, d, qmc)
+    if "qmcpy" in tasks:
+        qmcpy_row(row, args.qmcpy_log2n, d, qmcpy)
+    if "discrepancy" in tasks:
+        discrepancy_rows(row, qmc)
+    if "star" in tasks:
+        y = lowdisc.sobol(65536, 2, scramble="owen", seed=1)
+        row("exact star discrepancy, 65,536 2-D points", "lowdisc.star_discrepancy",
+            lambda: lowdisc.star_discrepancy(y), "(scipy and qmcpy have none)", None)
+
+
+def sobol_rows(row, task, n, d, qmc):
+    row(task, "lowdisc.qmc.Sobol(scramble=False)",
+        lambda: lqmc.Sobol(d, scramble=False).random(n),
+        "scipy Sobol(scramble=False)",
+        lambda: qmc.Sobol(d, scramble=False).random(n))
+    row(task, "lowdisc.qmc.Sobol(scramble=False)",
+        lambda: lqmc.Sobol(d, scramble=False).random(n),
+        "scipy Sobol(scramble=True) (LMS+shift)",
+        lambda: qmc.Sobol(d, seed=1).random(n))
+    row(task, "lowdisc.qmc.Sobol (Owen)",
+        lambda: lqmc.Sobol(d, seed=1).random(n),
+        "scipy Sobol(scramble=True) (LMS+shift)",
+        lambda: qmc.Sobol(d, seed=1).random(n))
+    row(task, "lowdisc.qmc.Sobol(randomize='fast-owen')",
+        lambda: lqmc.Sobol(d, seed=1, randomize="fast-owen").random(n),
+        "scipy Sobol(scramble=True) (LMS+shift)",
+        lambda: qmc.Sobol(d, seed=1).random(n))
+
+
+def qmcpy_row(row, log2n, d, qmcpy):
+    qmcpy_nus = None
+    small = 2**log2n
+    if qmcpy is not None:
+        def qmcpy_nus():
+            qmcpy.DigitalNetB2(d, seed=1, randomize="NUS").gen_samples(small, warn=False)
+    row(f"Sobol d={d}, 2^{log2n} points", "lowdisc.qmc.Sobol (Owen)",
+        lambda: lqmc.Sobol(d, seed=1).random(small),
+        "qmcpy DigitalNetB2(randomize='NUS')", qmcpy_nus)
+
+
+def discrepancy_rows(row, qmc):
+    x = lowdisc.sobol(4096, 8, scramble="owen", seed=1)
+    for method in ("CD", "L2-star"):
+        row(f"discrepancy {method}, n=4096, d=8", "lowdisc.discrepancy",
+            lambda m=method: lowdisc.discrepancy(x, method=m),
+            "scipy qmc.discrepancy (workers=1)",
+            lambda m=method: qmc.discrepancy(x, method=m))
+        row(f"discrepancy {method}, n=4096, d=8", "lowdisc.discrepancy",
+            lambda m=method: lowdisc.discrepancy(x, method=m),
+            "scipy qmc.discrepancy (workers=-1)",
+            lambda m=method: qmc.discrepancy(x, method=m, workers=-1))
+
+
+if __name__ == "__main__":
+    main()

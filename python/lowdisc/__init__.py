@@ -1,0 +1,66 @@
+"""lowdisc: sample sequences and their metrics as numpy arrays.
+
+* Points: :func:`sobol` (exact Owen scrambling and more), :func:`halton`,
+  :func:`independent`, :func:`stratified`, and :func:`pixel_samples`, the
+  renderer's pixel samplers (every ``--sampler`` of the ``lowdisc`` CLI).
+* Metrics: :func:`discrepancy` and :func:`geometric_discrepancy` (scipy's
+  signatures and conventions), :func:`star_discrepancy` (exact),
+  :func:`star_bounds`, :func:`min_distance` (also toroidal),
+  :func:`power_spectrum`.
+* :mod:`lowdisc.qmc`: ``Sobol`` and ``Halton`` engines for
+  ``scipy.stats.qmc``.
+* Interop: :func:`sobol_matrices`, :func:`qmcpy_generating_matrices`.
+
+scipy is optional: only :mod:`lowdisc.qmc` (for its base class) and a few
+``geometric_discrepancy`` options use it.
+"""
+
+from ._metrics import (
+    DEFAULT_MAX_WORK,
+    StarBounds,
+    discrepancy,
+    geometric_discrepancy,
+    min_distance,
+    nearest_neighbour_distances,
+    power_spectrum,
+    star_bounds,
+    star_discrepancy,
+    star_work,
+)
+from ._points import (
+    HALTON_DIMENSIONS,
+    SOBOL_DIMENSIONS,
+    halton,
+    independent,
+    pixel_samples,
+    qmcpy_generating_matrices,
+    sampler_names,
+    sobol,
+    sobol_matrices,
+    stratified,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "DEFAULT_MAX_WORK",
+    "HALTON_DIMENSIONS",
+    "SOBOL_DIMENSIONS",
+    "StarBounds",
+    "discrepancy",
+    "geometric_discrepancy",
+    "halton",
+    "independent",
+    "min_distance",
+    "nearest_neighbour_distances",
+    "pixel_samples",
+    "power_spectrum",
+    "qmcpy_generating_matrices",
+    "sampler_names",
+    "sobol",
+    "sobol_matrices",
+    "star_bounds",
+    "star_discrepancy",
+    "star_work",
+    "stratified",
+]

@@ -1,0 +1,84 @@
+"""Argument checks shared by the package: every public function normalises
+its arguments here first, so bad input raises ``TypeError`` or ``ValueError``
+with a message naming the argument, before anything reaches the extension."""
+
+from __future__ import annotations
+
+import operator
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+#: The element types a point array can have.
+DTYPES = ("float64", "float32", "uint32")
+
+
+def integer(value: Any, name: str, *, low: int = 0, high: int | None = None) -> int:
+    """``value`` as a Python int in ``[low, high]`` (``high=None``: no limit)."""
+    if isinstance(value, bool):
+        raise TypeError(f"{name} must be an integer, got bool")
+    try:
+        v = operator.index(value)
+    except TypeError:
+        raise TypeError(
+            f"{name} must be an integer, got {type(value).__name__}"
+        ) from None
+    if v < low or (high is not None and v > high):
+        bound = f"between {low} and {high}" if high is not None else f"at least {low}"
+        raise ValueError(f"{name} must be {bound}, got {v}")
+    return v
+
+
+def seed(value: Any) -> int:
+    """A seed: an integer in ``[0, 2**64)``."""
+    return integer(value, "seed", high=2**64 - 1)
+
+
+def choice(value: Any, name: str, options: tuple[str, ...]) -> str:
+    """``value`` if it is one of ``options``."""
+    if not isinstance(value, str) or value not in options:
+        listed = ", ".join(repr(o) for o in options)
+        raise ValueError(f"{name} must be one of {listed}, got {value!r}")
+    return value
+
+
+def dtype_name(dtype: npt.DTypeLike) -> str:
+    """numpy's name of ``dtype`` if it is float64, float32 or uint32."""
+    try:
+        name = np.dtype(dtype).name
+    except TypeError:
+        raise TypeError(f"dtype must be float64, float32 or uint32, got {dtype!r}") from None
+    if name not in DTYPES:
+        raise TypeError(f"dtype must be float64, float32 or uint32, got {name}")
+    return name
+
+
+def sample(sample: npt.ArrayLike, *, scipy_messages: bool = True) -> np.ndarray:
+    """A 2-D sample in the unit hypercube as a C-contiguous float64 array.
+
+    Lists and arrays of any real dtype are accepted (as scipy does); complex,
+    object or string arrays raise ``TypeError``; NaN, a wrong shape or a
+    value outside ``[0, 1]`` raise ``ValueError`` (scipy's messages).
+    """
+    array = np.asarray(sample)
+    if array.dtype.kind not in "biuf":
+        raise TypeError(f"sample must be an array of real numbers, got dtype {array.dtype}")
+    if array.ndim != 2:
+        raise ValueError("Sample is not a 2D array")
+    array = np.ascontiguousarray(array, dtype=np.float64)
+    if array.size == 0:
+        raise ValueError("Sample is empty")
+    if np.isnan(array).any():
+        raise ValueError("Sample contains NaN")
+    if array.max() > 1.0 or array.min() < 0.0:
+        raise ValueError("Sample is not in unit hypercube")
+    return array
+
+
+def workers(value: Any) -> int:
+    """scipy's ``workers``: -1 or a positive count."""
+    w = integer(value, "workers", low=-1)
+    if w == 0:
+        raise ValueError(f"Invalid number of workers: {w}, must be -1 or > 0")
+    return w

@@ -1,0 +1,123 @@
+"""Points: bit identity with scipy, the CLI's pixel samples, net properties
+of Owen-scrambled Sobol, the generator matrices."""
+
+from __future__ import annotations
+
+import subprocess
+
+import numpy as np
+import pytest
+
+import lowdisc
+
+scipy_qmc = pytest.importorskip("scipy.stats.qmc")
+
+
+def test_unscrambled_sobol_is_scipys_bit_for_bit():
+    ours = lowdisc.sobol(4096, 64)
+    theirs = scipy_qmc.Sobol(64, scramble=False, bits=32).random(4096)
+    assert np.array_equal(ours, theirs)
+    # A later window, from start (scipy must draw the points before it).
+    engine = scipy_qmc.Sobol(5, scramble=False, bits=32)
+    engine.fast_forward(1000)
+    assert np.array_equal(lowdisc.sobol(300, 5, start=1000), engine.random(300))
+
+
+def test_dtypes_are_views_of_the_same_digit_words():
+    words = lowdisc.sobol(256, 3, scramble="owen", seed=4, dtype=np.uint32)
+    assert words.dtype == np.uint32
+    x64 = lowdisc.sobol(256, 3, scramble="owen", seed=4)
+    assert np.array_equal(x64, words / 2.0**32)
+    x32 = lowdisc.sobol(256, 3, scramble="owen", seed=4, dtype="float32")
+    assert x32.dtype == np.float32 and x32.max() < 1.0
+    assert np.array_equal(x32, ((words >> 8) / 2.0**24).astype(np.float32))
+
+
+def test_gray_and_natural_orders_give_the_same_first_2_to_the_m_points():
+    gray = lowdisc.sobol(512, 4, scramble="fast-owen", seed=2)
+    natural = lowdisc.sobol(512, 4, order="natural", scramble="fast-owen", seed=2)
+    assert not np.array_equal(gray, natural)
+    assert np.array_equal(np.sort(gray, axis=0), np.sort(natural, axis=0))
+
+
+@pytest.mark.parametrize("scramble", ["owen", "fast-owen"])
+def test_owen_scrambled_points_are_0_m_2_nets(scramble):
+    # Sobol dimensions 0 and 1 form a (0, m, 2)-net, and nested scrambling
+    # keeps it: every 2^a x 2^(m-a) box holds exactly one point.
+    m = 10
+    x = lowdisc.sobol(2**m, 2, scramble=scramble, seed=11)
+    for a in range(m + 1):
+        cells = np.floor(x[:, 0] * 2**a) * 2 ** (m - a) + np.floor(x[:, 1] * 2 ** (m - a))
+        assert len(np.unique(cells)) == 2**m, a
+
+
+def test_owen_scrambled_points_are_uniform_over_seeds():
+    # Each point of a nested uniform scramble is uniform in [0,1)^d: the
+    # mean of point 0 over 400 seeds is near 1/2 (4 standard errors).
+    first = np.array([lowdisc.sobol(1, 3, scramble="owen", seed=s)[0] for s in range(400)])
+    assert np.all(np.abs(first.mean(axis=0) - 0.5) < 4 * np.sqrt(1 / 12 / 400))
+    # And the scramble changes with the seed.
+    assert not np.array_equal(lowdisc.sobol(8, 2, scramble="owen", seed=1),
+                              lowdisc.sobol(8, 2, scramble="owen", seed=2))
+
+
+def test_halton_unscrambled_is_scipys_to_one_ulp():
+    ours = lowdisc.halton(2000, 10)
+    theirs = scipy_qmc.Halton(10, scramble=False).random(2000)
+    assert np.max(np.abs(ours - theirs)) <= 2.0**-52
+
+
+def test_results_do_not_depend_on_the_request_split():
+    whole = lowdisc.halton(70_000, 2, scramble="owen", seed=3)
+    parts = np.vstack([lowdisc.halton(30_000, 2, scramble="owen", seed=3),
+                       lowdisc.halton(40_000, 2, start=30_000, scramble="owen", seed=3)])
+    assert np.array_equal(whole, parts)
+    ind = lowdisc.independent(100, 3, seed=8)
+    assert np.array_equal(ind[50:], lowdisc.independent(50, 3, start=50, seed=8))
+    strat = lowdisc.stratified(64, 2, seed=1)
+    cells = np.floor(strat * 8).astype(int)
+    assert len({tuple(c) for c in cells}) == 64  # one point per 8x8 stratum
+
+
+def test_generator_matrices_reproduce_the_points():
+    m = lowdisc.sobol_matrices(6)
+    assert m.shape == (6, 32) and m.dtype == np.uint32
+    k = np.arange(64, dtype=np.uint32)
+    bits = (k[:, None] >> np.arange(32, dtype=np.uint32)) & 1
+    words = np.bitwise_xor.reduce(np.where(bits[:, None, :] == 1, m[None, :, :], 0), axis=2)
+    assert np.array_equal(words, lowdisc.sobol(64, 6, order="natural", dtype=np.uint32))
+
+
+def test_qmcpy_reproduces_lowdiscs_sobol_from_the_exported_matrices():
+    qmcpy = pytest.importorskip("qmcpy")
+    net = qmcpy.DigitalNetB2(5, generating_matrices=lowdisc.qmcpy_generating_matrices(5),
+                             msb=True, t=32, randomize=False, order="RADICAL INVERSE")
+    assert np.array_equal(net.gen_samples(256, warn=False),
+                          lowdisc.sobol(256, 5, order="natural"))
+
+
+def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed):
+    out = subprocess.run(
+        [str(binary), "points", "--sampler", sampler, "--pixel", f"{pixel[0]},{pixel[1]}",
+         "--spp", str(spp), "--res", f"{res[0]}x{res[1]}", "--dims", str(extra),
+         "--seed", str(seed)],
+        check=True, capture_output=True, text=True).stdout
+    return np.array([[float(v) for v in line.split()] for line in out.splitlines()])
+
+
+@pytest.mark.parametrize("sampler", lowdisc.sampler_names())
+def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, sampler):
+    pixels = [(0, 0), (5, 2), (2, 3)]
+    got = lowdisc.pixel_samples(sampler, 16, (6, 4), pixels, 7, seed=3)
+    assert got.shape == (3, 16, 7) and got.dtype == np.float32
+    for p, pixel in enumerate(pixels):
+        rows = cli_pixel_rows(lowdisc_bin, sampler, pixel, 16, (6, 4), 5, 3)
+        expected = rows.copy()
+        expected[:, :2] -= pixel  # the CLI prints film positions
+        assert np.array_equal(got[p].astype(np.float64), expected), (sampler, pixel)
+
+
+def test_every_catalog_sampler_is_available():
+    assert set(lowdisc.sampler_names()) >= {
+        "independent", "stratified", "halton", "halton-owen", "sobol", "sobol-xor",
+        "sobol-owen", "sobol-fast-owen", "paper", "paper-repro", "padded-sobol", "zsobol"}
