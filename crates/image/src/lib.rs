@@ -9,7 +9,7 @@
 //! - Error metrics ([`metrics`]): MSE, relMSE, RMSE and MAE on linear radiance
 //!   and on 8-bit sRGB, per-pixel error images; the same over the pixels a
 //!   [`PixelMask`] keeps ([`mask`]: directly visible emitters left out); the
-//!   blurred (perceptual) error ([`perceptual`]).
+//!   blurred (perceptual) error ([`perceptual`]); NVIDIA's FLIP ([`flip`]).
 //! - Visualisation and utilities ([`mod@heatmap`], [`ops`]): false-colour
 //!   heatmaps, crops, nearest-neighbour upscaling, statistics.
 //!
@@ -17,6 +17,7 @@
 
 pub mod color;
 pub mod error;
+pub mod flip;
 pub mod heatmap;
 pub mod image;
 pub mod io;
@@ -27,6 +28,7 @@ pub mod perceptual;
 
 pub use color::{luminance, srgb_decode, srgb_encode, srgb8_decode, srgb8_encode, to_srgb8};
 pub use error::{ErrorKind, ImageError};
+pub use flip::{flip_error, flip_error_map};
 pub use heatmap::{Normalization, heatmap, viridis};
 pub use image::{MAX_PIXELS, RgbImage};
 pub use io::{
