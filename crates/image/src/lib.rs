@@ -10,15 +10,14 @@
 //!   and on 8-bit sRGB, per-pixel error images; the same over the pixels a
 //!   [`PixelMask`] keeps ([`mask`]: directly visible emitters left out); the
 //!   blurred (perceptual) error ([`perceptual`]); NVIDIA's FLIP ([`flip`]).
-//! - Visualisation and utilities ([`mod@heatmap`], [`ops`]): false-colour
-//!   heatmaps, crops, nearest-neighbour upscaling, statistics.
+//! - Utilities ([`ops`]): crops, nearest-neighbour upscaling, statistics.
+//!   (False-colour heatmaps with a colour bar are `lowdisc-plot`'s.)
 //!
 //! Nothing here panics on bad input: every failure is an [`ImageError`].
 
 pub mod color;
 pub mod error;
 pub mod flip;
-pub mod heatmap;
 pub mod image;
 pub mod io;
 pub mod mask;
@@ -29,7 +28,6 @@ pub mod perceptual;
 pub use color::{luminance, srgb_decode, srgb_encode, srgb8_decode, srgb8_encode, to_srgb8};
 pub use error::{ErrorKind, ImageError};
 pub use flip::{flip_error, flip_error_map};
-pub use heatmap::{Normalization, heatmap, viridis};
 pub use image::{MAX_PIXELS, RgbImage};
 pub use io::{
     ImageFormat, ReadOptions, Transfer, WriteOptions, decode_image, encode_image, read_image,

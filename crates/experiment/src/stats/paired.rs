@@ -9,7 +9,7 @@
 //!
 //! **Method: log-ratio mean with a Student-t interval.** With
 //! `d_i = ln(a_i / b_i)`, the ratio is `exp(mean(d))` and its 95 % interval
-//! `exp(mean(d) ± t_{0.975, n-1} · se(d))` ([`crate::Summary`] of the
+//! `exp(mean(d) ± t_{0.975, n-1} · se(d))` ([`Summary`] of the
 //! `d_i`). The estimate is the *geometric* mean of the per-seed ratios: the
 //! typical factor between the two samplers' errors on one render, which is
 //! what a user choosing a sampler gets. It differs from the ratio of the
@@ -27,7 +27,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::summary::Summary;
+use super::summary::Summary;
 
 /// The outcome of comparing a sampler with the baseline.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -105,7 +105,7 @@ pub fn paired_ratio(errors: &[f64], baseline: &[f64]) -> Option<PairedRatio> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tests_support::normal;
+    use crate::stats::tests_support::normal;
     use lowdisc::pcg::Pcg32;
 
     /// `n` paired errors of true ratio `ratio`: a log-normal seed effect of

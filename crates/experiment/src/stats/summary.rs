@@ -9,7 +9,7 @@
 //! an experiment, where the normal quantile would be too narrow. The interval
 //! assumes the mean is about normally distributed over repetitions: true for
 //! the sum of many pixel errors, less so for a handful of heavy-tailed runs
-//! (see [`crate::paired`] for the ratio, computed on logarithms).
+//! (see [`super::paired`] for the ratio, computed on logarithms).
 
 use serde::{Deserialize, Serialize};
 use statrs::distribution::{ContinuousCDF, Normal, StudentsT};
@@ -113,7 +113,7 @@ impl Summary {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tests_support::normal;
+    use crate::stats::tests_support::normal;
     use lowdisc::pcg::Pcg32;
 
     #[test]
