@@ -12,7 +12,10 @@
 //! - [`reference`]: the converged reference render, cached on disk;
 //! - [`run`](mod@run): the repeated renders of every sampler and their convergence series;
 //! - [`sweep`]: the threshold sweep of the paper's method;
-//! - [`stats`]: mean and sd, ratios, log-log slopes, the cache key's hash;
+//! - [`quality`]: the emitter mask, masked errors, blurred MSE and FLIP of a render;
+//! - [`stats`]: mean and sd, mean ± SE with Student-t intervals, paired
+//!   ratios with intervals and verdicts, log-log slopes, the cache key's hash;
+//! - [`comparison`]: those statistics for every sampler and compared metric;
 //! - [`results`]: the numbers measured, as `results.json` holds them;
 //! - [`figure`]: the 2x2-pixel point figure's film positions and panels;
 //! - [`report`]: images, plots, `report.md`, `report.html`, `results.json`;
@@ -52,9 +55,11 @@
 //! own noise adds at most about 1/8 to the last point's relMSE. Every file
 //! is written to a temporary file and renamed into place.
 
+pub mod comparison;
 pub mod config;
 pub mod figure;
 pub mod progress;
+pub mod quality;
 pub mod reference;
 pub mod report;
 pub mod results;
