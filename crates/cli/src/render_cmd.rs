@@ -393,4 +393,3 @@ pub fn run(config: &RenderConfig) -> Result<()> {
     }
     Ok(())
 }
-

@@ -82,6 +82,9 @@ mod tests {
             threads: None,
             out: "out".into(),
             command: Vec::new(),
+            preset: None,
+            emitter_border: 3,
+            blur_sigma: 1.0,
         }
     }
 

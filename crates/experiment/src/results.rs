@@ -7,7 +7,9 @@ use std::path::PathBuf;
 use lowdisc_image::RgbImage;
 use serde::Serialize;
 
+use crate::comparison::MetricStats;
 use crate::metrics::{ErrorStats, MetricSummary};
+use crate::quality::Quality;
 use crate::stats::{MeanSd, ratio, ratio_interval};
 
 /// One render's numbers.
@@ -21,6 +23,8 @@ pub struct RunResult {
     pub linear: ErrorStats,
     /// Errors on 8-bit sRGB.
     pub srgb8: ErrorStats,
+    /// Masked errors, blurred MSE and FLIP.
+    pub quality: Quality,
 }
 
 /// One point of a convergence series.
@@ -58,6 +62,9 @@ pub struct SamplerResult {
     /// Approximate 95 % interval of that ratio ([`crate::stats::ratio_interval`];
     /// `[1, 1]` for `sobol` itself).
     pub relmse_ratio_interval: Option<[f64; 2]>,
+    /// Mean ± SE, 95 % interval and paired ratio to `sobol` of each compared
+    /// metric ([`crate::comparison`]).
+    pub statistics: Vec<MetricStats>,
     /// Every run.
     pub runs: Vec<RunResult>,
     /// relMSE against spp (seed 0).
@@ -101,6 +108,8 @@ pub struct Results {
     pub convergence_reference: ReferenceInfo,
     /// Threshold sweep of the paper's method.
     pub threshold_sweep: Vec<SweepPoint>,
+    /// Fraction of the pixels the masked metrics keep.
+    pub kept_fraction: f64,
 }
 
 /// Images kept for the report.
@@ -152,6 +161,7 @@ pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
         },
         relmse_ratio_to_sobol: None,
         relmse_ratio_interval: None,
+        statistics: Vec::new(),
         runs: Vec::new(),
         convergence: Vec::new(),
         convergence_slope: None,
@@ -161,7 +171,6 @@ pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
 #[cfg(test)]
 mod tests {
     use super::*;
-
     #[test]
     fn ratios_are_to_sobol_and_absent_without_it() {
         let mut v = vec![

@@ -122,6 +122,9 @@ pub fn markdown(config: &ExperimentConfig, results: &Results, wall: f64, heat_to
         "built-in scene (gold, aluminium, car-paint coated shapes, procedural sky)".to_string(),
         |p| format!("`{}`", p.display()),
     );
+    if let Some(p) = config.preset {
+        scene = format!("preset `{}`: {}", p.name(), p.description());
+    }
     if let Some(e) = &config.envmap {
         let _ = write!(
             scene,
@@ -161,6 +164,7 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
         notes(results)
     );
     md.push_str(&details_table(results));
+    md.push_str(&super::statistics::section(config, results));
     let _ = write!(
         md,
         "\n## Images\n\nEach row: the seed-0 render, its central quarter magnified {}x, and its per-pixel relative squared error \
@@ -215,8 +219,11 @@ brighter is worse, larger errors show as the top colour). Click an image for its
 `{schema, command, version, git_hash, machine: {cpu, cores}, settings, reference: {file, cached, time_s}, \
 convergence_reference: {file, cached, time_s}, \
 samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, srgb8: {mse, relmse, rmse, mae}, \
-relmse_ratio_to_sobol, relmse_ratio_interval, runs: [{seed, time_s, linear, srgb8}], convergence: [{spp, relmse}], convergence_slope}], \
-threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], wall_time_s}`; every metric summary is `{mean, sd}`.\n");
+relmse_ratio_to_sobol, relmse_ratio_interval, statistics: [{metric, summary: {n, mean, sd, se, ci95}, ratio_to_baseline: \
+{n, ratio, ci95, log_ratio, ratio_of_means, verdict} or null}], \
+runs: [{seed, time_s, linear, srgb8, quality: {masked, blurred_mse, flip}}], convergence: [{spp, relmse}], convergence_slope}], \
+threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], kept_fraction, wall_time_s}`; \
+the other metric summaries are `{mean, sd}`.\n");
     md
 }
 
@@ -236,6 +243,7 @@ mod tests {
             reference: reference.clone(),
             convergence_reference: reference,
             threshold_sweep: Vec::new(),
+            kept_fraction: 1.0,
         }
     }
 

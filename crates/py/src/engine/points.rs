@@ -12,9 +12,9 @@ use core::str::FromStr;
 use lowdisc::catalog::{MAX_POINT_WORDS, SamplerName};
 use lowdisc::halton::{self, Halton, HaltonRandomize};
 use lowdisc::independent::Independent;
+use lowdisc::scramble::RandomizeStrategy;
 use lowdisc::scramble::ScrambleCache;
 use lowdisc::sobol::{self, GrayCodeBatch};
-use lowdisc::scramble::RandomizeStrategy;
 use lowdisc::stratified;
 use rayon::prelude::*;
 
