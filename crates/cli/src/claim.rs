@@ -17,7 +17,9 @@ use lowdisc::catalog::{Order, SamplerConfig, SamplerName};
 use lowdisc_metrics::{DistanceMetric, min_distance, star_discrepancy};
 use serde::Serialize;
 
-use crate::{claim_report, parse, plots, pointfile};
+use lowdisc_experiment::figure::sampler_title;
+
+use crate::{claim_report, parse, pointfile};
 
 /// The long help of `paper-claim`.
 pub const LONG_ABOUT: &str = "\
@@ -218,7 +220,7 @@ pub fn measure(config: &ClaimConfig) -> Result<Vec<ClaimRow>> {
                     tor.push(min_distance(&points, DistanceMetric::Toroidal)?);
                 }
                 rows.push(ClaimRow {
-                    label: plots::sampler_title(sampler),
+                    label: sampler_title(sampler),
                     sampler: sampler.name.to_string(),
                     threshold: is_paper.then_some(sampler.threshold),
                     dims: [pair.start, pair.start + 1],

@@ -8,10 +8,9 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::Args;
 use lowdisc::catalog::SamplerConfig;
-use lowdisc::pixel::PixelSampler;
-use lowdisc_plot::ScatterGrid;
+use lowdisc_experiment::figure::figure;
 
-use crate::{parse, plots};
+use crate::parse;
 
 /// The image the figure samples: 2x2 pixels, as in the paper.
 const RESOLUTION: [u32; 2] = [2, 2];
@@ -97,43 +96,13 @@ impl FigureArgs {
     }
 }
 
-/// The film positions of every pixel's samples, pixels row by row, all
-/// drawn from one sampler (so the literal paper stream runs through them all).
-pub fn film_positions(config: &SamplerConfig) -> Result<Vec<[f64; 2]>> {
-    let mut sampler = config.build()?;
-    let mut positions = Vec::new();
-    for y in 0..config.resolution[1] {
-        for x in 0..config.resolution[0] {
-            for index in 0..config.spp {
-                sampler.start_pixel_sample([x, y], index, 0);
-                let [ox, oy] = sampler.get_pixel_2d();
-                positions.push([f64::from(x) + f64::from(ox), f64::from(y) + f64::from(oy)]);
-            }
-        }
-    }
-    Ok(positions)
-}
-
 /// Runs `figure`: computes every panel, then writes the file.
 pub fn run(config: &FigureConfig) -> Result<()> {
-    let mut panels = Vec::with_capacity(config.samplers.len());
-    for sampler in &config.samplers {
-        let positions = film_positions(sampler)?;
-        panels.push(plots::film_panel(
-            plots::sampler_title(sampler),
-            positions,
-            [0, 0],
-            RESOLUTION,
-            sampler.spp,
-        ));
-    }
     let first = &config.samplers[0];
-    let mut grid = ScatterGrid::row(panels);
-    grid.panel_size = 300.0;
-    grid.title = Some(format!(
+    let title = format!(
         "{}x{} pixels, {} samples per pixel (seed {})",
         RESOLUTION[0], RESOLUTION[1], first.spp, first.seed
-    ));
-    grid.to_canvas().save(&config.output)?;
+    );
+    figure(&config.samplers, 300.0, title)?.save(&config.output)?;
     Ok(())
 }

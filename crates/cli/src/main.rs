@@ -12,7 +12,6 @@
 
 mod claim;
 mod claim_report;
-mod compose;
 mod discrepancy;
 mod experiment;
 mod figure;

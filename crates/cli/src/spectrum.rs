@@ -10,11 +10,12 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use lowdisc::catalog::{Order, SamplerConfig};
+use lowdisc_experiment::figure::sampler_title;
 use lowdisc_metrics::{RadialSpectrum, radial_power_spectrum};
-use lowdisc_plot::{LineChart, ScatterGrid, ScatterPanel, Series};
+use lowdisc_plot::{LineChart, ScatterGrid, ScatterPanel, Series, compose};
 use serde::Serialize;
 
-use crate::{compose, parse, plots, pointfile};
+use crate::{parse, pointfile};
 
 /// The long help of `spectrum` (`lowdisc spectrum --help`).
 pub const LONG_ABOUT: &str = "\
@@ -135,7 +136,7 @@ pub fn run(config: &SpectrumConfig, mut out: impl Write) -> Result<()> {
         let points =
             pointfile::sequence_points(sampler, config.n, config.dims.clone(), Order::Natural)?;
         let spectrum = radial_power_spectrum(&points, config.max_frequency)?;
-        let title = plots::sampler_title(sampler);
+        let title = sampler_title(sampler);
         let xy: Vec<[f64; 2]> = points.iter().map(|p| [p[0], p[1]]).collect();
         let mut scatter = ScatterGrid::row(vec![ScatterPanel::new(
             format!(
@@ -168,7 +169,7 @@ pub fn run(config: &SpectrumConfig, mut out: impl Write) -> Result<()> {
             .with(Series::reference("white noise (1)", white));
         rows.push(vec![scatter, chart.to_canvas()]);
         entries.push(Entry {
-            sampler: plots::sampler_title(sampler),
+            sampler: sampler_title(sampler),
             threshold: matches!(
                 sampler.name,
                 lowdisc::catalog::SamplerName::Paper | lowdisc::catalog::SamplerName::PaperRepro

@@ -49,7 +49,7 @@ pub struct ErrorMetrics {
     pub srgb8: ErrorStats,
 }
 
-fn check_sizes(test: &RgbImage, reference: &RgbImage) -> Result<(), ImageError> {
+pub(crate) fn check_sizes(test: &RgbImage, reference: &RgbImage) -> Result<(), ImageError> {
     if test.same_size(reference) {
         Ok(())
     } else {
@@ -67,7 +67,7 @@ fn check_sizes(test: &RgbImage, reference: &RgbImage) -> Result<(), ImageError> 
 }
 
 /// Accumulates the four metrics over (test, reference) value pairs.
-fn accumulate(pairs: impl Iterator<Item = (f64, f64)>, epsilon: f64) -> ErrorStats {
+pub(crate) fn accumulate(pairs: impl Iterator<Item = (f64, f64)>, epsilon: f64) -> ErrorStats {
     let (mut se, mut rel, mut ae, mut n) = (0.0f64, 0.0f64, 0.0f64, 0usize);
     for (x, r) in pairs {
         let d = x - r;
@@ -86,7 +86,7 @@ fn accumulate(pairs: impl Iterator<Item = (f64, f64)>, epsilon: f64) -> ErrorSta
     }
 }
 
-fn channel_pairs<'a, T: Copy + 'a>(
+pub(crate) fn channel_pairs<'a, T: Copy + 'a>(
     test: &'a [[T; 3]],
     reference: &'a [[T; 3]],
 ) -> impl Iterator<Item = (T, T)> + 'a {

@@ -1,9 +1,7 @@
 //! Error metrics against hand-computed values on tiny images.
 
 use lowdisc_image::metrics::{RELMSE_EPSILON, linear_errors, srgb8_errors};
-use lowdisc_image::{
-    ErrorKind, Normalization, PixelError, RgbImage, error_metrics, heatmap, pixel_errors, viridis,
-};
+use lowdisc_image::{ErrorKind, PixelError, RgbImage, error_metrics, pixel_errors};
 
 fn close(a: f64, b: f64) {
     assert!((a - b).abs() <= 1e-6 * b.abs().max(1.0), "{a} != {b}");
@@ -145,29 +143,4 @@ fn metrics_serialize_with_named_fields() {
             );
         }
     }
-}
-
-#[test]
-fn heatmap_of_zero_error_is_the_low_end() {
-    let (test, _) = pair_2x2();
-    for norm in [
-        Normalization::Max,
-        Normalization::Quantile(0.99),
-        Normalization::Fixed(1.0),
-    ] {
-        let zero = pixel_errors(&test, &test, PixelError::RelativeSquared).unwrap();
-        let map = heatmap(&zero, 2, 2, norm).unwrap();
-        assert!(map.pixels().iter().all(|&p| p == viridis(0.0)), "{norm:?}");
-    }
-    // And the largest error of a non-zero map is the high end.
-    let (test, reference) = pair_2x2();
-    let map = lowdisc_image::heatmap::error_heatmap(
-        &test,
-        &reference,
-        PixelError::Absolute,
-        Normalization::Max,
-    )
-    .unwrap();
-    assert_eq!(map.get(1, 1), Some(viridis(1.0)));
-    assert_eq!(map.get(1, 0), Some(viridis(0.0)));
 }

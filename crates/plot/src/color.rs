@@ -132,6 +132,23 @@ mod tests {
     }
 
     #[test]
+    fn viridis_lightness_rises_at_every_stop() {
+        // Rec.709 luminance of the decoded sRGB stops.
+        let decode = |c: u8| {
+            let v = f64::from(c) / 255.0;
+            if v <= 0.04045 {
+                v / 12.92
+            } else {
+                ((v + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        let lum = |c: Color| 0.2126 * decode(c.r) + 0.7152 * decode(c.g) + 0.0722 * decode(c.b);
+        for pair in VIRIDIS.windows(2) {
+            assert!(lum(pair[1]) > lum(pair[0]), "{pair:?}");
+        }
+    }
+
+    #[test]
     fn hex_is_lowercase_rrggbb() {
         assert_eq!(Color::rgb(255, 16, 1).hex(), "#ff1001");
     }

@@ -1,5 +1,8 @@
 //! Heatmaps: a grid of values (row 0 at the top) shown through a colour map,
-//! with a title and a colour bar labelled with the value range.
+//! with a title and a colour bar labelled with the value range, and the
+//! [`quantile`] that scales an error map so that a few outliers do not wash
+//! it out. Values outside the range are clamped to the colour map's ends;
+//! NaN is drawn magenta, a colour the maps never produce.
 
 use crate::Error;
 use crate::axis::short;
@@ -134,9 +137,50 @@ impl Heatmap {
     }
 }
 
+/// The `q`-quantile of the finite values, `q` in `(0, 1]`: the
+/// `ceil(q n)`-th smallest of the `n` finite values (the largest for
+/// `q = 1`). `None` without finite values or for `q` outside `(0, 1]`.
+pub fn quantile(values: &[f64], q: f64) -> Option<f64> {
+    if !(q > 0.0 && q <= 1.0) {
+        return None;
+    }
+    let mut finite: Vec<f64> = values.iter().copied().filter(|v| v.is_finite()).collect();
+    if finite.is_empty() {
+        return None;
+    }
+    finite.sort_by(f64::total_cmp);
+    let index = ((q * finite.len() as f64).ceil() as usize).clamp(1, finite.len()) - 1;
+    Some(finite[index])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn quantile_is_the_ceil_q_n_th_smallest_finite_value() {
+        let v = [4.0, 0.0, 2.0, 1.0, f64::NAN, f64::INFINITY];
+        // Finite values sorted: 0, 1, 2, 4.
+        assert_eq!(quantile(&v, 0.5), Some(1.0));
+        assert_eq!(quantile(&v, 0.51), Some(2.0));
+        assert_eq!(quantile(&v, 1.0), Some(4.0));
+        assert_eq!(quantile(&v, 1e-9), Some(0.0));
+        assert_eq!(quantile(&v, 0.0), None);
+        assert_eq!(quantile(&v, 1.5), None);
+        assert_eq!(quantile(&[f64::NAN], 0.5), None);
+    }
+
+    #[test]
+    fn values_beyond_the_range_clamp_and_nan_is_magenta() {
+        let mut h = Heatmap::new("t", 3, 1, vec![-1.0, 7.0, f64::NAN]).unwrap();
+        h.range = Some([0.0, 2.0]);
+        let r = h.to_raster();
+        let v0 = ColorMap::Viridis.map(0.0);
+        let v1 = ColorMap::Viridis.map(1.0);
+        assert_eq!(&r.rgba[..4], &[v0.r, v0.g, v0.b, 255]);
+        assert_eq!(&r.rgba[4..8], &[v1.r, v1.g, v1.b, 255]);
+        assert_eq!(&r.rgba[8..], &[255, 0, 255, 255]);
+    }
 
     #[test]
     fn raster_maps_min_and_max_to_the_ends() {

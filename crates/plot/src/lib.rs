@@ -8,6 +8,8 @@
 //! * [`Heatmap`] of a value grid through a [`ColorMap`] (error images,
 //!   spectra).
 //!
+//! [`compose::grid`] places several canvases in rows in one picture.
+//!
 //! ```no_run
 //! use lowdisc_plot::{ScatterGrid, ScatterPanel};
 //! let panel = ScatterPanel::new("points", vec![[0.25, 0.5], [0.75, 0.125]]).with_regular_grid(2);
@@ -24,6 +26,7 @@
 pub mod axis;
 pub mod canvas;
 pub mod color;
+pub mod compose;
 pub mod heatmap;
 pub mod line;
 mod raster;
@@ -36,7 +39,7 @@ use std::path::Path;
 pub use axis::{Axis, Frame};
 pub use canvas::{Anchor, Canvas, Face, Format, Raster, Shape, Stroke, TextStyle};
 pub use color::{Color, ColorMap};
-pub use heatmap::Heatmap;
+pub use heatmap::{Heatmap, quantile};
 pub use line::{LineChart, Series};
 pub use raster::text_width;
 pub use scatter::{ScatterGrid, ScatterPanel};

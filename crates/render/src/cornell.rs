@@ -179,9 +179,18 @@ fn quads(qs: &[Quad]) -> Result<TriangleMesh, RenderError> {
     Ok(TriangleMesh::new(&Transform::IDENTITY, data, false)?)
 }
 
-/// The camera of the published data, for a film of `resolution`
-/// (the field of view spans the shorter side).
+/// The camera of the published data, a pinhole (the field of view spans
+/// the shorter side of the film).
 pub fn cornell_camera() -> Result<CameraSpec, RenderError> {
+    cornell_camera_with_lens(0.0, 1e6)
+}
+
+/// The camera of the published data with a thin lens of `lens_radius` mm
+/// focused at `focal_distance` mm (0 is a pinhole).
+pub fn cornell_camera_with_lens(
+    lens_radius: f32,
+    focal_distance: f32,
+) -> Result<CameraSpec, RenderError> {
     let mirror = Transform::scale(Vec3::new(-1.0, 1.0, 1.0))
         .map_err(|_| RenderError::InvalidScene("singular camera".into()))?;
     let look = Transform::look_at(
@@ -196,6 +205,8 @@ pub fn cornell_camera() -> Result<CameraSpec, RenderError> {
         world_from_camera: camera_from_world.inverse(),
         params: PerspectiveParams {
             fov: CORNELL_FOV_DEGREES,
+            lens_radius,
+            focal_distance,
             ..PerspectiveParams::default()
         },
     })
@@ -204,6 +215,14 @@ pub fn cornell_camera() -> Result<CameraSpec, RenderError> {
 /// Builds the Cornell box at `resolution` with a box pixel filter of
 /// radius 0.5 (each sample lands in its own pixel).
 pub fn cornell_box(resolution: [u32; 2]) -> Result<Scene, RenderError> {
+    cornell_box_with_camera(resolution, cornell_camera()?)
+}
+
+/// [`cornell_box`] seen through `camera` (e.g. [`cornell_camera_with_lens`]).
+pub fn cornell_box_with_camera(
+    resolution: [u32; 2],
+    camera: CameraSpec,
+) -> Result<Scene, RenderError> {
     let mut b = SceneBuilder::new();
     let white = b.add_material(Material::Diffuse {
         reflectance: Rgb::from_array(CORNELL_WHITE),
@@ -229,7 +248,7 @@ pub fn cornell_box(resolution: [u32; 2]) -> Result<Scene, RenderError> {
         two_sided: false,
     };
     b.add_mesh(quads(&[LIGHT])?, black, Some(emission));
-    b.set_camera(cornell_camera()?);
+    b.set_camera(camera);
     let filter =
         Filter::box_filter([0.5, 0.5]).map_err(|e| RenderError::InvalidScene(e.to_string()))?;
     b.set_film(FilmSettings::new(resolution, filter));

@@ -1,6 +1,6 @@
 //! Running the experiment: the scene, the repeated renders of every sampler
 //! and their convergence series, collected with the reference and the
-//! threshold sweep into [`Results`] and handed to [`super::report`].
+//! threshold sweep into [`Results`] and handed to [`crate::report`].
 
 use std::time::Instant;
 
@@ -9,30 +9,25 @@ use lowdisc::catalog::SamplerName;
 use lowdisc_image::{ErrorStats, ImageFormat, ReadOptions, RgbImage, decode_image, error_metrics};
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
-use lowdisc_render::render::{NoProgress, RenderOptions, render};
+use lowdisc_render::render::{RenderOptions, render};
 use lowdisc_render::scene::Scene;
 
-use super::reference::reference as render_reference;
-use super::results::{
+use crate::config::ExperimentConfig;
+use crate::progress::{Progress, Stage, samples};
+use crate::reference::reference as render_reference;
+use crate::results::{
     ConvPoint, Images, MetricSummary, Results, RunResult, SamplerResult, fill_ratios,
 };
-use super::stats::{FNV_OFFSET, MeanSd, fnv1a, log_log_slope};
-use super::sweep::threshold_sweep;
-use super::{ExperimentConfig, report, scene};
-
-/// Prints `msg` to stderr unless `--quiet`.
-pub fn progress(config: &ExperimentConfig, msg: &str) {
-    if !config.quiet {
-        eprintln!("{msg}");
-    }
-}
+use crate::stats::{FNV_OFFSET, MeanSd, fnv1a, log_log_slope};
+use crate::sweep::threshold_sweep;
+use crate::{report, scene};
 
 /// The scene and the hash of its content: the built-in scene's id or the
 /// scene file's bytes (not the files it includes), and the environment
 /// map's bytes. `--envmap` replaces the built-in sky, or every image-based
 /// `infinite` light of a scene file (pbrt-v4 scenes often ship without
 /// their environment map).
-fn load(config: &ExperimentConfig) -> Result<(Scene, u64)> {
+fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result<(Scene, u64)> {
     let mut hash = FNV_OFFSET;
     let read = |p: &std::path::Path| {
         std::fs::read(p).with_context(|| format!("cannot read `{}`", p.display()))
@@ -66,7 +61,7 @@ fn load(config: &ExperimentConfig) -> Result<(Scene, u64)> {
             let loaded = load_pbrt_scene(path, &options)
                 .with_context(|| format!("cannot load scene `{}`", path.display()))?;
             for w in &loaded.warnings {
-                progress(config, w);
+                observer.note(w);
             }
             let mut s = loaded.scene;
             s.set_resolution(config.resolution)?;
@@ -103,12 +98,14 @@ fn measure_sampler(
     scene: &Scene,
     name: SamplerName,
     reference: &RgbImage,
+    stage: &Stage,
 ) -> Result<(SamplerResult, RgbImage)> {
     let mut runs = Vec::new();
     let mut first: Option<RgbImage> = None;
     let mut deterministic = true;
     for seed in 0..u64::from(config.runs) {
-        let out = render(scene, &options(config, name, seed, config.spp), &NoProgress)?;
+        let out = render(scene, &options(config, name, seed, config.spp), stage)?;
+        stage.finished_render(out.stats.samples);
         let m = error_metrics(&out.image, reference)?;
         runs.push(RunResult {
             seed,
@@ -150,11 +147,13 @@ fn convergence(
     scene: &Scene,
     name: SamplerName,
     reference: &RgbImage,
+    stage: &Stage,
 ) -> Result<(Vec<ConvPoint>, Option<f64>)> {
     let mut series = Vec::new();
     let mut spp = 1;
     while spp <= config.conv_max {
-        let out = render(scene, &options(config, name, 0, spp), &NoProgress)?;
+        let out = render(scene, &options(config, name, 0, spp), stage)?;
+        stage.finished_render(out.stats.samples);
         series.push(ConvPoint {
             spp,
             relmse: error_metrics(&out.image, reference)?.linear.relmse,
@@ -168,41 +167,36 @@ fn convergence(
     Ok((series, log_log_slope(&pts)))
 }
 
-/// Runs the experiment and writes the report folder.
-pub fn run(config: &ExperimentConfig) -> Result<()> {
+/// Runs the experiment and writes the report folder, telling `observer`
+/// what it does.
+pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<()> {
+    config.validate()?;
     let start = Instant::now();
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
-    let (mut scene, scene_hash) = load(config)?;
-    let (reference, ref_info) = render_reference(config, &scene, scene_hash, config.ref_spp)?;
+    let (mut scene, scene_hash) = load(config, observer)?;
+    let (reference, ref_info) =
+        render_reference(config, &scene, scene_hash, config.ref_spp, observer)?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();
+    let per_sampler = u64::from(config.runs) * samples(config.resolution, config.spp);
     for (k, &name) in config.samplers.iter().enumerate() {
-        progress(
-            config,
-            &format!(
-                "[{}/{}] {}: {} runs at {} spp",
-                k + 1,
-                config.samplers.len(),
-                name.as_str(),
-                config.runs,
-                config.spp
-            ),
+        let title = format!(
+            "[{}/{}] {}: {} runs at {} spp",
+            k + 1,
+            config.samplers.len(),
+            name.as_str(),
+            config.runs,
+            config.spp
         );
-        let (r, image) = measure_sampler(config, &scene, name, &reference)?;
+        let stage = Stage::begin(observer, &title, per_sampler);
+        let (r, image) = measure_sampler(config, &scene, name, &reference, &stage)?;
+        stage.end();
         samplers.push(r);
         renders.push(image);
     }
     fill_ratios(&mut samplers);
-    progress(
-        config,
-        &format!(
-            "threshold sweep: paper-repro at {} thresholds, {} runs each",
-            super::sweep::THRESHOLDS.len(),
-            config.runs
-        ),
-    );
-    let threshold_sweep = threshold_sweep(config, &scene, &reference)?;
+    let threshold_sweep = threshold_sweep(config, &scene, &reference, observer)?;
     // The convergence series: at `conv_res` against their own reference
     // (the main one when resolution and spp are the same).
     let same = config.conv_res == config.resolution && config.conv_ref_spp == config.ref_spp;
@@ -211,19 +205,22 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
         (&reference, ref_info.clone())
     } else {
         scene.set_resolution(config.conv_res)?;
-        let (image, info) = render_reference(config, &scene, scene_hash, config.conv_ref_spp)?;
+        let (image, info) =
+            render_reference(config, &scene, scene_hash, config.conv_ref_spp, observer)?;
         conv_own = image;
         (&conv_own, info)
     };
+    // Spp 1, 2, 4, .. conv_max: 2 conv_max - 1 samples per pixel in all.
+    let per_series = samples(config.conv_res, 2 * config.conv_max - 1);
     for (s, &name) in samplers.iter_mut().zip(&config.samplers) {
-        progress(
-            config,
-            &format!(
-                "convergence of {}: 1 to {} spp at {}x{}",
-                s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
-            ),
+        let title = format!(
+            "convergence of {}: 1 to {} spp at {}x{}",
+            s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
         );
-        (s.convergence, s.convergence_slope) = convergence(config, &scene, name, conv_reference)?;
+        let stage = Stage::begin(observer, &title, per_series);
+        (s.convergence, s.convergence_slope) =
+            convergence(config, &scene, name, conv_reference, &stage)?;
+        stage.end();
     }
     let results = Results {
         samplers,
@@ -233,12 +230,9 @@ pub fn run(config: &ExperimentConfig) -> Result<()> {
     };
     let images = Images { reference, renders };
     report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
-    progress(
-        config,
-        &format!(
-            "report written to {}",
-            config.out.join("report.md").display()
-        ),
-    );
+    observer.note(&format!(
+        "report written to {}",
+        config.out.join("report.md").display()
+    ));
     Ok(())
 }

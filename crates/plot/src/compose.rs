@@ -1,10 +1,10 @@
-//! Placing several plot canvases in one picture: rows of canvases side by
-//! side, rows stacked top to bottom, each canvas's shapes shifted to its place.
+//! Placing several canvases in one picture: rows of canvases side by side,
+//! rows stacked top to bottom, each canvas's shapes moved to its place.
 
-use lowdisc_plot::{Canvas, Shape};
+use crate::canvas::{Canvas, Shape};
 
 /// `shape` moved by `(dx, dy)`.
-fn shifted(shape: Shape, dx: f32, dy: f32) -> Shape {
+pub fn shifted(shape: Shape, dx: f32, dy: f32) -> Shape {
     let at = |p: [f32; 2]| [p[0] + dx, p[1] + dy];
     match shape {
         Shape::Line { from, to, stroke } => Shape::Line {
@@ -89,7 +89,7 @@ pub fn grid(rows: Vec<Vec<Canvas>>) -> Canvas {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lowdisc_plot::Color;
+    use crate::Color;
 
     #[test]
     fn canvases_are_placed_side_by_side_and_stacked() {

@@ -8,13 +8,14 @@
 use anyhow::Result;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_image::{RgbImage, error_metrics};
-use lowdisc_render::render::{NoProgress, render};
+use lowdisc_render::render::render;
 use lowdisc_render::scene::Scene;
 
-use super::ExperimentConfig;
-use super::results::SweepPoint;
-use super::run::options;
-use super::stats::MeanSd;
+use crate::config::ExperimentConfig;
+use crate::progress::{Progress, Stage, samples};
+use crate::results::SweepPoint;
+use crate::run::options;
+use crate::stats::MeanSd;
 
 /// The thresholds swept.
 pub const THRESHOLDS: [f64; 7] = [0.0, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0];
@@ -37,7 +38,19 @@ pub fn threshold_sweep(
     config: &ExperimentConfig,
     scene: &Scene,
     reference: &RgbImage,
+    observer: &dyn Progress,
 ) -> Result<Vec<SweepPoint>> {
+    let title = format!(
+        "threshold sweep: paper-repro at {} thresholds, {} runs each",
+        THRESHOLDS.len(),
+        config.runs
+    );
+    let renders = (THRESHOLDS.len() as u64) * u64::from(config.runs);
+    let stage = Stage::begin(
+        observer,
+        &title,
+        renders * samples(config.resolution, config.spp),
+    );
     let mut out = Vec::new();
     for t in THRESHOLDS {
         let mut linear = Vec::new();
@@ -45,8 +58,9 @@ pub fn threshold_sweep(
         for seed in 0..u64::from(config.runs) {
             let mut o = options(config, SamplerName::PaperRepro, seed, config.spp);
             o.threshold = t;
-            let image = render(scene, &o, &NoProgress)?.image;
-            let m = error_metrics(&image, reference)?;
+            let rendered = render(scene, &o, &stage)?;
+            stage.finished_render(rendered.stats.samples);
+            let m = error_metrics(&rendered.image, reference)?;
             linear.push(m.linear.relmse);
             srgb8.push(m.srgb8.relmse);
         }
@@ -57,5 +71,6 @@ pub fn threshold_sweep(
             srgb8_relmse: MeanSd::of(&srgb8),
         });
     }
+    stage.end();
     Ok(out)
 }

@@ -1,6 +1,22 @@
 //! Aggregation of repeated measurements: mean and sample standard
 //! deviation, error ratios to the baseline sampler, log-log slope fits, and
-//! the stable content hash that keys the reference cache.
+//! the stable content hash that keys the reference cache; and the
+//! statistics that can tell two samplers apart:
+//!
+//! - [`Summary`] ([`summary`]): the mean error, its standard error
+//!   `sd / sqrt(n)` and a two-sided 95 % confidence interval from Student's t
+//!   with `n - 1` degrees of freedom ([`t_quantile`]), valid for small `n`;
+//! - [`PairedRatio`] ([`paired`]): the error of a sampler relative to the
+//!   baseline from *paired* runs (run `i` of both uses seed index `i`),
+//!   computed on the logarithms of the per-seed ratios, with its interval;
+//! - [`Verdict`]: "better", "worse" or "not distinguishable", from whether
+//!   the ratio's interval excludes 1.
+
+pub mod paired;
+pub mod summary;
+
+pub use paired::{PairedRatio, Verdict, paired_ratio};
+pub use summary::{CONFIDENCE, Summary, t_quantile};
 
 use serde::Serialize;
 
@@ -108,5 +124,18 @@ mod tests {
         // Published FNV-1a 64 test vectors: "" and "a".
         assert_eq!(fnv1a(FNV_OFFSET, b""), 0xcbf2_9ce4_8422_2325);
         assert_eq!(fnv1a(FNV_OFFSET, b"a"), 0xaf63_dc4c_8601_ec8c);
+    }
+}
+
+#[cfg(test)]
+mod tests_support {
+    //! Seeded normal variates for the simulation tests.
+    use lowdisc::pcg::Pcg32;
+
+    /// A standard normal variate (Box-Muller on two PCG32 uniforms).
+    pub fn normal(rng: &mut Pcg32) -> f64 {
+        let u1 = 1.0 - rng.next_f64(); // (0, 1]
+        let u2 = rng.next_f64();
+        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
     }
 }

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use lowdisc_image::{ErrorStats, RgbImage};
 use serde::Serialize;
 
-use super::stats::{MeanSd, ratio};
+use crate::stats::{MeanSd, ratio};
 
 /// One render's numbers.
 #[derive(Debug, Clone, Serialize)]

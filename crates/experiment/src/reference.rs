@@ -5,13 +5,14 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use lowdisc_image::RgbImage;
-use lowdisc_render::render::{NoProgress, render};
+use lowdisc_render::render::render;
 use lowdisc_render::scene::Scene;
 
-use super::results::ReferenceInfo;
-use super::run::{options, progress};
-use super::stats::{FNV_OFFSET, fnv1a};
-use super::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::progress::{Progress, Stage, samples};
+use crate::results::ReferenceInfo;
+use crate::run::options;
+use crate::stats::{FNV_OFFSET, fnv1a};
 
 /// The reference of `scene` at its film's resolution (part of the cache
 /// key) with `spp` samples per pixel, from the cache when present.
@@ -20,6 +21,7 @@ pub fn reference(
     scene: &Scene,
     scene_hash: u64,
     spp: u32,
+    observer: &dyn Progress,
 ) -> Result<(RgbImage, ReferenceInfo)> {
     let resolution = scene.film().params.resolution;
     let key = format!(
@@ -36,10 +38,7 @@ pub fn reference(
     let file = dir.join(format!("ref-{hash:016x}.pfm"));
     if file.is_file() {
         if let Ok(image) = lowdisc_image::read_image(&file) {
-            progress(
-                config,
-                &format!("reusing cached reference {}", file.display()),
-            );
+            observer.note(&format!("reusing cached reference {}", file.display()));
             return Ok((
                 image,
                 ReferenceInfo {
@@ -50,24 +49,20 @@ pub fn reference(
             ));
         }
     }
-    progress(
-        config,
-        &format!(
-            "rendering reference: {}x{}, {} spp with {}",
-            resolution[0],
-            resolution[1],
-            spp,
-            REF_SAMPLER.as_str()
-        ),
+    let title = format!(
+        "rendering reference: {}x{}, {} spp with {}",
+        resolution[0],
+        resolution[1],
+        spp,
+        REF_SAMPLER.as_str()
     );
-    let out = render(
-        scene,
-        &options(config, REF_SAMPLER, REF_SEED, spp),
-        &NoProgress,
-    )?;
+    let stage = Stage::begin(observer, &title, samples(resolution, spp));
+    let out = render(scene, &options(config, REF_SAMPLER, REF_SEED, spp), &stage)?;
+    stage.finished_render(out.stats.samples);
+    stage.end();
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;
     lowdisc_image::write_pfm(&file, &out.image)?;
-    progress(config, &format!("cached reference in {}", file.display()));
+    observer.note(&format!("cached reference in {}", file.display()));
     Ok((
         out.image,
         ReferenceInfo {

@@ -1,0 +1,108 @@
+//! The settings of one experiment ([`ExperimentConfig`]), the fixed choices
+//! of the reference render, and the checks that every setting is in range.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use lowdisc::catalog::SamplerName;
+
+/// The seed of the reference render.
+pub const REF_SEED: u64 = 0x0005_EED0_F2EF;
+/// The sampler of the reference render.
+pub const REF_SAMPLER: SamplerName = SamplerName::SobolOwen;
+/// The samplers compared by default.
+pub const DEFAULT_SAMPLERS: &str = "independent,stratified,halton,sobol,paper,paper-repro,sobol-xor,padded-sobol,sobol-fast-owen,zsobol";
+/// The largest image side accepted.
+pub const MAX_SIDE: u32 = 16_384;
+
+/// A complete experiment: what to render, how often and where to write.
+#[derive(Debug, Clone)]
+pub struct ExperimentConfig {
+    /// Scene file or `None` for the built-in scene.
+    pub scene: Option<PathBuf>,
+    /// Samplers, in the order given.
+    pub samplers: Vec<SamplerName>,
+    /// Samples per pixel.
+    pub spp: u32,
+    /// Runs per sampler.
+    pub runs: u32,
+    /// Resolution.
+    pub resolution: [u32; 2],
+    /// Reference spp.
+    pub ref_spp: u32,
+    /// Convergence plot cap.
+    pub conv_max: u32,
+    /// Resolution of the convergence series.
+    pub conv_res: [u32; 2],
+    /// Reference spp of the convergence series.
+    pub conv_ref_spp: u32,
+    /// Environment map.
+    pub envmap: Option<PathBuf>,
+    /// Paper threshold (renders of `paper`/`paper-repro` and the figure).
+    pub threshold: f64,
+    /// Maximum depth.
+    pub max_depth: u32,
+    /// Threads.
+    pub threads: Option<usize>,
+    /// Output folder.
+    pub out: PathBuf,
+    /// The command line that asked for this experiment, kept in `results.json`.
+    pub command: Vec<String>,
+}
+
+impl ExperimentConfig {
+    /// Checks that every setting is in range; the messages name the
+    /// command-line options.
+    pub fn validate(&self) -> Result<()> {
+        if self.samplers.is_empty() {
+            bail!("--samplers needs at least one sampler name");
+        }
+        for (flag, [w, h]) in [("--res", self.resolution), ("--conv-res", self.conv_res)] {
+            if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
+                bail!("{flag} {w}x{h} is out of range: each side must be 1 to {MAX_SIDE} pixels");
+            }
+        }
+        let (spp, runs, ref_spp, conv_max) = (self.spp, self.runs, self.ref_spp, self.conv_max);
+        if spp == 0 || spp > 1 << 16 {
+            bail!("--spp must be between 1 and 65536, got {spp}");
+        }
+        if runs == 0 || runs > 1000 {
+            bail!("--runs must be between 1 and 1000, got {runs}");
+        }
+        if ref_spp == 0 || ref_spp > 1 << 20 {
+            bail!("--ref-spp must be between 1 and 1048576, got {ref_spp}");
+        }
+        if !conv_max.is_power_of_two() || conv_max > 1 << 16 {
+            bail!("--conv-max must be a power of two up to 65536, got {conv_max}");
+        }
+        let conv_ref_spp = self.conv_ref_spp;
+        if conv_ref_spp == 0 || conv_ref_spp > 1 << 20 {
+            bail!("--conv-ref-spp must be between 1 and 1048576, got {conv_ref_spp}");
+        }
+        if !(0.0..=1.0).contains(&self.threshold) {
+            bail!("--threshold must lie in [0, 1], got {}", self.threshold);
+        }
+        if self.max_depth > lowdisc_render::integrator::MAX_DEPTH_LIMIT {
+            bail!("--maxdepth is too large: {}", self.max_depth);
+        }
+        if let Some(t) = self.threads {
+            if t == 0 || t > lowdisc_render::render::MAX_THREADS {
+                bail!(
+                    "--threads must be between 1 and {}, got {t}",
+                    lowdisc_render::render::MAX_THREADS
+                );
+            }
+        }
+        if let Some(e) = &self.envmap {
+            if !e.is_file() {
+                bail!("--envmap `{}` is not a file", e.display());
+            }
+        }
+        if let Some(s) = &self.scene {
+            if !s.is_file() {
+                bail!("scene `{}` is not a file", s.display());
+            }
+        }
+        Ok(())
+    }
+}

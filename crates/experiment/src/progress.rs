@@ -1,0 +1,122 @@
+//! How a run reports what it is doing: the [`Progress`] observer that the
+//! caller implements (the CLI draws bars and prints lines; the library
+//! never prints), and [`Stage`], which turns the renderer's per-render
+//! reports into one count of camera samples per stage.
+//!
+//! A run is a sequence of stages (the reference, each sampler's runs, the
+//! threshold sweep, the convergence series). Each stage announces its total
+//! number of camera samples with [`Progress::begin`], reports the samples
+//! finished so far with [`Progress::advance`] (called from render worker
+//! threads, so it must be cheap) and closes with [`Progress::end`].
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use lowdisc_render::render::{self, ProgressSink};
+
+/// Receives a run's progress; every method does nothing by default.
+pub trait Progress: Sync {
+    /// A one-line message (scene warnings, a reused cache file).
+    fn note(&self, message: &str) {
+        let _ = message;
+    }
+    /// A stage named `name` of `total` camera samples begins.
+    fn begin(&self, name: &str, total: u64) {
+        let _ = (name, total);
+    }
+    /// `done` of the current stage's samples are finished. Calls come from
+    /// worker threads and may arrive slightly out of order.
+    fn advance(&self, done: u64) {
+        let _ = done;
+    }
+    /// The current stage is finished.
+    fn end(&self) {}
+}
+
+/// An observer that ignores everything.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Silent;
+
+impl Progress for Silent {}
+
+/// One stage in progress: forwards each render's sample count, offset by
+/// the samples of the stage's earlier renders, to the observer.
+pub struct Stage<'a> {
+    observer: &'a dyn Progress,
+    offset: AtomicU64,
+}
+
+impl<'a> Stage<'a> {
+    /// Announces stage `name` of `total` samples.
+    pub fn begin(observer: &'a dyn Progress, name: &str, total: u64) -> Stage<'a> {
+        observer.begin(name, total);
+        Stage {
+            observer,
+            offset: AtomicU64::new(0),
+        }
+    }
+
+    /// Marks one render of `samples` samples as finished.
+    pub fn finished_render(&self, samples: u64) {
+        let done = self.offset.fetch_add(samples, Ordering::Relaxed) + samples;
+        self.observer.advance(done);
+    }
+
+    /// Ends the stage.
+    pub fn end(self) {
+        self.observer.end();
+    }
+}
+
+impl ProgressSink for Stage<'_> {
+    fn report(&self, p: render::Progress) {
+        self.observer
+            .advance(self.offset.load(Ordering::Relaxed) + p.samples_done);
+    }
+}
+
+/// The camera samples of one render at `resolution` with `spp` samples.
+pub fn samples(resolution: [u32; 2], spp: u32) -> u64 {
+    u64::from(resolution[0]) * u64::from(resolution[1]) * u64::from(spp)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Mutex;
+
+    #[derive(Default)]
+    struct Log(Mutex<Vec<String>>);
+
+    impl Progress for Log {
+        fn begin(&self, name: &str, total: u64) {
+            self.0.lock().unwrap().push(format!("begin {name} {total}"));
+        }
+        fn advance(&self, done: u64) {
+            self.0.lock().unwrap().push(format!("{done}"));
+        }
+        fn end(&self) {
+            self.0.lock().unwrap().push("end".into());
+        }
+    }
+
+    #[test]
+    fn a_stage_counts_samples_across_renders() {
+        let log = Log::default();
+        let stage = Stage::begin(&log, "s", 20);
+        let report = |done| render::Progress {
+            tiles_done: 0,
+            tiles_total: 1,
+            samples_done: done,
+            samples_total: 10,
+            rays: 0,
+        };
+        stage.report(report(4));
+        stage.finished_render(10);
+        stage.report(report(6));
+        stage.finished_render(10);
+        stage.end();
+        let got = log.0.into_inner().unwrap();
+        assert_eq!(got, ["begin s 20", "4", "10", "16", "20", "end"]);
+        assert_eq!(samples([4, 3], 2), 24);
+    }
+}

@@ -1,0 +1,68 @@
+//! `results.json`: every number of the report with the settings, the
+//! command line and the machine (schema in the crate's top doc).
+
+use anyhow::Result;
+use serde_json::json;
+
+use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::results::Results;
+
+fn cpu_model() -> String {
+    std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown".into())
+}
+
+fn git_hash() -> Option<String> {
+    let out = std::process::Command::new("git")
+        .args(["rev-parse", "--short", "HEAD"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .ok()?;
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+/// The pretty-printed JSON document.
+pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<String> {
+    let names: Vec<&str> = config.samplers.iter().map(|s| s.as_str()).collect();
+    let value = json!({
+        "schema": 1,
+        "command": config.command,
+        "version": env!("CARGO_PKG_VERSION"),
+        "git_hash": git_hash(),
+        "machine": {
+            "cpu": cpu_model(),
+            "cores": std::thread::available_parallelism().map_or(1, |n| n.get()),
+        },
+        "settings": {
+            "scene": config.scene.as_ref().map_or("builtin".to_string(), |p| p.display().to_string()),
+            "width": config.resolution[0],
+            "height": config.resolution[1],
+            "spp": config.spp,
+            "runs": config.runs,
+            "ref_spp": config.ref_spp,
+            "ref_sampler": REF_SAMPLER.as_str(),
+            "ref_seed": REF_SEED,
+            "max_depth": config.max_depth,
+            "threshold": config.threshold,
+            "conv_max": config.conv_max,
+            "conv_res": config.conv_res,
+            "conv_ref_spp": config.conv_ref_spp,
+            "samplers": names,
+        },
+        "reference": results.reference,
+        "convergence_reference": results.convergence_reference,
+        "samplers": results.samplers,
+        "threshold_sweep": results.threshold_sweep,
+        "wall_time_s": wall,
+    });
+    Ok(serde_json::to_string_pretty(&value)?)
+}

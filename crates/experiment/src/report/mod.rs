@@ -1,0 +1,47 @@
+//! Writing the report folder: images ([`images`]: linear EXR, sRGB PNG,
+//! crops, error heatmaps), charts ([`charts`]), `results.json` ([`json`]),
+//! `report.md` ([`markdown`]) and `report.html` ([`html`], the same
+//! content as a web page). Every file goes through a temporary file and a
+//! rename.
+
+pub mod charts;
+pub mod html;
+pub mod images;
+pub mod json;
+pub mod markdown;
+
+use std::path::Path;
+
+use anyhow::{Context, Result};
+
+use crate::config::ExperimentConfig;
+use crate::results::{Images, Results};
+
+fn write_text(path: &Path, text: &str) -> Result<()> {
+    lowdisc_image::io::write_bytes_atomically(path, text.as_bytes())
+        .with_context(|| format!("cannot write `{}`", path.display()))
+}
+
+/// Writes every file of the report folder.
+pub fn write_all(
+    config: &ExperimentConfig,
+    results: &Results,
+    images: &Images,
+    wall: f64,
+) -> Result<()> {
+    let dir = &config.out;
+    images::save_with_crop(dir, "reference", &images.reference)?;
+    for (s, image) in results.samplers.iter().zip(&images.renders) {
+        images::save_with_crop(dir, &s.name, image)?;
+        images::save_error_heatmap(dir, &s.name, image, &images.reference)?;
+    }
+    charts::write_charts(config, results)?;
+    let md = markdown::markdown(config, results, wall);
+    write_text(&dir.join("report.md"), &md)?;
+    write_text(&dir.join("report.html"), &html::html(&md))?;
+    write_text(
+        &dir.join("results.json"),
+        &json::json(config, results, wall)?,
+    )?;
+    Ok(())
+}
