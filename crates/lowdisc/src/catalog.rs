@@ -22,6 +22,8 @@
 //! | `sobol-burley` | Burley 2020 shuffled Owen Sobol, 4-D padding | pixel (0,0) of a 1x1 image |
 //! | `laine-karras` | the same with the 2011 Laine-Karras hash | pixel (0,0) of a 1x1 image |
 //! | `sobol-pixel-xor` | per-pixel Sobol, random digital shift | pixel (0,0) of a 1x1 image |
+//! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
+//! | `zsobol-joint` | Z-order Sobol, 4-D groups for the path tracer | pixel (0,0) of a 1x1 image |
 
 mod points;
 
@@ -31,8 +33,9 @@ use core::str::FromStr;
 use crate::halton::HaltonRandomize;
 use crate::paper::check_threshold;
 use crate::pixel::{
-    BurleySampler, GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler,
-    NestedHash, PaddedSobolSampler, PixelXorSampler, Sampler, StratifiedSampler, ZSobolSampler,
+    BurleySampler, GlobalSobolMode, GlobalSobolSampler, GroupLayout, HaltonSampler,
+    IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, Sampler,
+    StratifiedSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::{Error, RandomizeStrategy};
 
@@ -80,11 +83,16 @@ pub enum SamplerName {
     LaineKarras,
     /// `sobol-pixel-xor`: per-pixel Sobol with a random digital shift.
     SobolPixelXor,
+    /// `zsobol-4d`: Z-order Sobol padded by 4-D groups in Burley's order.
+    ZSobol4d,
+    /// `zsobol-joint`: Z-order Sobol padded by 4-D groups chosen for the
+    /// path tracer (film position with the first light sample).
+    ZSobolJoint,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 17] = [
+    pub const ALL: [SamplerName; 19] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -102,6 +110,8 @@ impl SamplerName {
         SamplerName::SobolBurley,
         SamplerName::LaineKarras,
         SamplerName::SobolPixelXor,
+        SamplerName::ZSobol4d,
+        SamplerName::ZSobolJoint,
     ];
 
     /// The name as written on the command line.
@@ -124,6 +134,8 @@ impl SamplerName {
             SamplerName::SobolBurley => "sobol-burley",
             SamplerName::LaineKarras => "laine-karras",
             SamplerName::SobolPixelXor => "sobol-pixel-xor",
+            SamplerName::ZSobol4d => "zsobol-4d",
+            SamplerName::ZSobolJoint => "zsobol-joint",
         }
     }
 
@@ -151,6 +163,10 @@ impl SamplerName {
             }
             SamplerName::LaineKarras => "as sobol-burley with the Laine-Karras 2011 hash",
             SamplerName::SobolPixelXor => "per-pixel Sobol with a random digital shift per pixel",
+            SamplerName::ZSobol4d => "Z-order Sobol padded by 4-D groups in Burley's order",
+            SamplerName::ZSobolJoint => {
+                "Z-order Sobol padded by 4-D groups: film position with the first light sample"
+            }
         }
     }
 
@@ -167,6 +183,15 @@ impl SamplerName {
                 | SamplerName::Paper
                 | SamplerName::PaperRepro
         )
+    }
+
+    /// The 4-D group layout of the `zsobol-4d` and `zsobol-joint` names.
+    pub fn group_layout(self) -> Option<GroupLayout> {
+        match self {
+            SamplerName::ZSobol4d => Some(GroupLayout::Sequential),
+            SamplerName::ZSobolJoint => Some(GroupLayout::PathVertices),
+            _ => None,
+        }
     }
 
     /// The randomization strategy of the `sobol*` names (`None` for others).
@@ -300,6 +325,11 @@ impl SamplerConfig {
                 BurleySampler::new(spp, NestedHash::LaineKarras, seed).map(Sampler::from)
             }
             SamplerName::SobolPixelXor => PixelXorSampler::new(spp, seed).map(Sampler::from),
+            SamplerName::ZSobol4d | SamplerName::ZSobolJoint => {
+                let layout = self.name.group_layout().unwrap_or(GroupLayout::Sequential);
+                ZSobolJointSampler::new(spp, res, layout, RandomizeStrategy::FastOwen, seed)
+                    .map(Sampler::from)
+            }
         }
     }
 }

@@ -5,7 +5,7 @@
 
 use super::{
     BurleySampler, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
-    PixelSampler, PixelXorSampler, StratifiedSampler, ZSobolSampler,
+    PixelSampler, PixelXorSampler, StratifiedSampler, ZSobolJointSampler, ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -27,6 +27,8 @@ pub enum Sampler {
     Burley(BurleySampler),
     /// Per-pixel Sobol with a random digital shift.
     PixelXor(PixelXorSampler),
+    /// Z-order Sobol padded by 4-D groups.
+    ZSobolJoint(ZSobolJointSampler),
 }
 
 /// Applies `$body` to the sampler inside whatever variant `$s` is.
@@ -41,6 +43,7 @@ macro_rules! dispatch {
             Sampler::ZSobol($inner) => $body,
             Sampler::Burley($inner) => $body,
             Sampler::PixelXor($inner) => $body,
+            Sampler::ZSobolJoint($inner) => $body,
         }
     };
 }
@@ -125,5 +128,11 @@ impl From<BurleySampler> for Sampler {
 impl From<PixelXorSampler> for Sampler {
     fn from(s: PixelXorSampler) -> Self {
         Sampler::PixelXor(s)
+    }
+}
+
+impl From<ZSobolJointSampler> for Sampler {
+    fn from(s: ZSobolJointSampler) -> Self {
+        Sampler::ZSobolJoint(s)
     }
 }
