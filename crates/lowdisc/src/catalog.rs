@@ -22,6 +22,8 @@
 //! | `sobol-burley` | Burley 2020 shuffled Owen Sobol, 4-D padding | pixel (0,0) of a 1x1 image |
 //! | `laine-karras` | the same with the 2011 Laine-Karras hash | pixel (0,0) of a 1x1 image |
 //! | `sobol-pixel-xor` | per-pixel Sobol, random digital shift | pixel (0,0) of a 1x1 image |
+//! | `pmj02` | generated PMJ02 sets, per-pixel permuted | pixel (0,0) of a 1x1 image |
+//! | `pmj02bn` | generated pmj02bn (blue-noise) sets | pixel (0,0) of a 1x1 image |
 //! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
 //! | `zsobol-joint` | Z-order Sobol, 4-D groups for the path tracer | pixel (0,0) of a 1x1 image |
 
@@ -34,9 +36,10 @@ use crate::halton::HaltonRandomize;
 use crate::paper::check_threshold;
 use crate::pixel::{
     BurleySampler, GlobalSobolMode, GlobalSobolSampler, GroupLayout, HaltonSampler,
-    IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, Sampler,
+    IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, Sampler,
     StratifiedSampler, ZSobolJointSampler, ZSobolSampler,
 };
+use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
 
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
@@ -83,6 +86,10 @@ pub enum SamplerName {
     LaineKarras,
     /// `sobol-pixel-xor`: per-pixel Sobol with a random digital shift.
     SobolPixelXor,
+    /// `pmj02`: progressive multi-jittered (0,2) point sets.
+    Pmj02,
+    /// `pmj02bn`: the blue-noise variant of `pmj02`.
+    Pmj02Bn,
     /// `zsobol-4d`: Z-order Sobol padded by 4-D groups in Burley's order.
     ZSobol4d,
     /// `zsobol-joint`: Z-order Sobol padded by 4-D groups chosen for the
@@ -92,7 +99,7 @@ pub enum SamplerName {
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 19] = [
+    pub const ALL: [SamplerName; 21] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -110,6 +117,8 @@ impl SamplerName {
         SamplerName::SobolBurley,
         SamplerName::LaineKarras,
         SamplerName::SobolPixelXor,
+        SamplerName::Pmj02,
+        SamplerName::Pmj02Bn,
         SamplerName::ZSobol4d,
         SamplerName::ZSobolJoint,
     ];
@@ -134,6 +143,8 @@ impl SamplerName {
             SamplerName::SobolBurley => "sobol-burley",
             SamplerName::LaineKarras => "laine-karras",
             SamplerName::SobolPixelXor => "sobol-pixel-xor",
+            SamplerName::Pmj02 => "pmj02",
+            SamplerName::Pmj02Bn => "pmj02bn",
             SamplerName::ZSobol4d => "zsobol-4d",
             SamplerName::ZSobolJoint => "zsobol-joint",
         }
@@ -163,6 +174,8 @@ impl SamplerName {
             }
             SamplerName::LaineKarras => "as sobol-burley with the Laine-Karras 2011 hash",
             SamplerName::SobolPixelXor => "per-pixel Sobol with a random digital shift per pixel",
+            SamplerName::Pmj02 => "progressive multi-jittered (0,2) sets (Christensen et al. 2018)",
+            SamplerName::Pmj02Bn => "pmj02 with best-candidate blue-noise placement (pmj02bn)",
             SamplerName::ZSobol4d => "Z-order Sobol padded by 4-D groups in Burley's order",
             SamplerName::ZSobolJoint => {
                 "Z-order Sobol padded by 4-D groups: film position with the first light sample"
@@ -325,6 +338,8 @@ impl SamplerConfig {
                 BurleySampler::new(spp, NestedHash::LaineKarras, seed).map(Sampler::from)
             }
             SamplerName::SobolPixelXor => PixelXorSampler::new(spp, seed).map(Sampler::from),
+            SamplerName::Pmj02 => PmjSampler::new(spp, PmjKind::Pmj02, seed).map(Sampler::from),
+            SamplerName::Pmj02Bn => PmjSampler::new(spp, PmjKind::Pmj02Bn, seed).map(Sampler::from),
             SamplerName::ZSobol4d | SamplerName::ZSobolJoint => {
                 let layout = self.name.group_layout().unwrap_or(GroupLayout::Sequential);
                 ZSobolJointSampler::new(spp, res, layout, RandomizeStrategy::FastOwen, seed)

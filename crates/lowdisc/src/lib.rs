@@ -3,7 +3,8 @@
 //! Exact Sobol sequences (all 21,201 dimensions of Joe & Kuo 2008), the
 //! digit-permuted Sobol of Song & Ro (2019) in a literal and a reproducible
 //! form, the modern randomizations (random digital shift, exact Owen, fast
-//! hash-based Owen), Halton, stratified and independent sequences, and the
+//! hash-based Owen, linear matrix scrambling), Halton, progressive
+//! multi-jittered (0,2), stratified and independent sequences, and the
 //! pixel samplers a renderer drives through four calls (`start_pixel_sample`,
 //! `get_1d`, `get_2d`, `get_pixel_2d`).
 //!
@@ -33,6 +34,7 @@ pub mod independent;
 pub mod paper;
 pub mod pcg;
 pub mod pixel;
+pub mod pmj;
 pub mod scramble;
 pub mod sobol;
 pub mod stratified;

@@ -25,7 +25,7 @@ fn names_round_trip_and_are_distinct() {
         assert!(!n.description().is_empty());
         assert!(names[..i].iter().all(|m| *m != names[i]));
     }
-    assert_eq!(names.len(), 19);
+    assert_eq!(names.len(), 21);
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
@@ -114,6 +114,14 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     (
         SamplerName::SobolPixelXor,
         [0.42065853, 0.8610611, 0.9550967, 0.85675836, 0.56369215],
+    ),
+    (
+        SamplerName::Pmj02,
+        [0.18439686, 0.24341822, 0.8118019, 0.48934674, 0.9083149],
+    ),
+    (
+        SamplerName::Pmj02Bn,
+        [0.18439686, 0.24341822, 0.8118019, 0.48934674, 0.9083149],
     ),
     (
         SamplerName::ZSobol4d,

@@ -14,6 +14,8 @@
 //!   offset = point index; `stratified`: `stratified::jittered_points` over
 //!   dimensions `0..end`, sliced to the range.
 //! * `padded-sobol`, `padded-sobol-lms`, `zsobol`, `sobol-burley`,
+//!   `laine-karras`, `sobol-pixel-xor`, `pmj02` and `pmj02bn` are pixel
+//!   samplers: their points are the `n`
 //!   `laine-karras`, `sobol-pixel-xor`, `zsobol-4d` and `zsobol-joint` are
 //!   pixel samplers: their points are the `n`
 //!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
@@ -31,9 +33,10 @@ use crate::halton::{self, Halton, HaltonRandomize};
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::pixel::{
-    BurleySampler, GroupLayout, NestedHash, PaddedSobolSampler, PixelXorSampler, WordSampler,
-    ZSobolJointSampler, ZSobolSampler,
+    BurleySampler, GroupLayout, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler,
+    WordSampler, ZSobolJointSampler, ZSobolSampler,
 };
+use crate::pmj::PmjKind;
 use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
 use crate::{Error, RandomizeStrategy, stratified};
 
@@ -186,6 +189,15 @@ pub fn generate_points(
         }
         SamplerName::SobolPixelXor => {
             let mut s = PixelXorSampler::new(n, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::Pmj02 | SamplerName::Pmj02Bn => {
+            let kind = if name == SamplerName::Pmj02 {
+                PmjKind::Pmj02
+            } else {
+                PmjKind::Pmj02Bn
+            };
+            let mut s = PmjSampler::new(n, kind, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
         SamplerName::ZSobol4d | SamplerName::ZSobolJoint => {

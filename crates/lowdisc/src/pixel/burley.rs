@@ -112,6 +112,27 @@ pub fn burley_word(index: u32, dim: u32, seed: u32, hash: NestedHash) -> u32 {
     hash.scramble(sample(shuffled, dim), hash.key(seed_hash(lane_seed)))
 }
 
+/// The samplers of this module: a value per virtual dimension `v` (the
+/// in-pixel offset at `v = 0, 1`, sampler dimension `d` at `v = d + 2`).
+trait VirtualDimensions {
+    /// The dimension counter.
+    fn counter(&mut self) -> &mut u32;
+    /// Virtual dimension `v` at the current sample.
+    fn word(&self, v: u32) -> u32;
+}
+
+/// The next 1-D value of a [`VirtualDimensions`] sampler.
+fn virtual_1d(s: &mut impl VirtualDimensions) -> u32 {
+    let d = super::next_key(s.counter(), 1) as u32;
+    s.word(d.wrapping_add(2))
+}
+
+/// The next 2-D value of a [`VirtualDimensions`] sampler.
+fn virtual_2d(s: &mut impl VirtualDimensions) -> [u32; 2] {
+    let v = (super::next_key(s.counter(), 2) as u32).wrapping_add(2);
+    [s.word(v), s.word(v.wrapping_add(1))]
+}
+
 /// Burley's shuffled, Owen-scrambled, 4-D padded per-pixel Sobol; see the
 /// module documentation.
 #[derive(Debug, Clone)]
@@ -149,8 +170,13 @@ impl BurleySampler {
     fn group_seed(&self, g: u32) -> u32 {
         (mix64((u64::from(self.pixel_seed) << 32) ^ u64::from(g)) >> 32) as u32
     }
+}
 
-    /// Virtual dimension `v` at the current sample.
+impl VirtualDimensions for BurleySampler {
+    fn counter(&mut self) -> &mut u32 {
+        &mut self.dimension
+    }
+
     #[inline]
     fn word(&self, v: u32) -> u32 {
         burley_word(self.index, v & 3, self.group_seed(v >> 2), self.hash)
@@ -170,15 +196,11 @@ impl WordSampler for BurleySampler {
     }
 
     fn get_1d_word(&mut self) -> u32 {
-        let v = self.dimension.wrapping_add(2);
-        self.dimension = self.dimension.wrapping_add(1);
-        self.word(v)
+        virtual_1d(self)
     }
 
     fn get_2d_words(&mut self) -> [u32; 2] {
-        let v = self.dimension.wrapping_add(2);
-        self.dimension = self.dimension.wrapping_add(2);
-        [self.word(v), self.word(v.wrapping_add(1))]
+        virtual_2d(self)
     }
 
     fn get_pixel_2d_words(&mut self) -> [u32; 2] {
@@ -209,8 +231,13 @@ impl PixelXorSampler {
             dimension: 0,
         })
     }
+}
 
-    /// Virtual dimension `v` at the current sample.
+impl VirtualDimensions for PixelXorSampler {
+    fn counter(&mut self) -> &mut u32 {
+        &mut self.dimension
+    }
+
     #[inline]
     fn word(&self, v: u32) -> u32 {
         let dim = if v < 2 {
@@ -235,15 +262,11 @@ impl WordSampler for PixelXorSampler {
     }
 
     fn get_1d_word(&mut self) -> u32 {
-        let v = self.dimension.wrapping_add(2);
-        self.dimension = self.dimension.wrapping_add(1);
-        self.word(v)
+        virtual_1d(self)
     }
 
     fn get_2d_words(&mut self) -> [u32; 2] {
-        let v = self.dimension.wrapping_add(2);
-        self.dimension = self.dimension.wrapping_add(2);
-        [self.word(v), self.word(v.wrapping_add(1))]
+        virtual_2d(self)
     }
 
     fn get_pixel_2d_words(&mut self) -> [u32; 2] {

@@ -353,14 +353,12 @@ impl WordSampler for GlobalSobolSampler {
     }
 
     fn get_1d_word(&mut self) -> u32 {
-        let d = self.dimension;
-        self.dimension = d.wrapping_add(1);
+        let d = super::next_key(&mut self.dimension, 1) as u32;
         self.value(d)
     }
 
     fn get_2d_words(&mut self) -> [u32; 2] {
-        let d = self.dimension;
-        self.dimension = d.wrapping_add(2);
+        let d = super::next_key(&mut self.dimension, 2) as u32;
         [self.value(d), self.value(d.wrapping_add(1))]
     }
 

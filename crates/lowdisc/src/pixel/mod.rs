@@ -34,6 +34,7 @@ mod global_sobol;
 mod halton;
 mod independent;
 mod padded_sobol;
+mod pmj;
 mod sampler;
 mod stratified;
 mod zsobol;
@@ -47,6 +48,7 @@ pub use global_sobol::{GlobalSobolMode, GlobalSobolSampler};
 pub use halton::HaltonSampler;
 pub use independent::IndependentSampler;
 pub use padded_sobol::{PaddedSobolSampler, permutation_element};
+pub use pmj::PmjSampler;
 pub use sampler::Sampler;
 pub use stratified::StratifiedSampler;
 pub use zsobol::ZSobolSampler;
@@ -96,6 +98,15 @@ impl<T: WordSampler> PixelSampler for T {
 /// right after their seed. It is 0, the second seed the catalog passed when
 /// the strategy carried a seed of its own, so every value stays as pinned.
 pub(crate) const SEED_PAD: u64 = 0;
+
+/// The key of the next `n` dimensions (the counter's value), advancing the
+/// counter past them.
+#[inline]
+pub(crate) fn next_key(counter: &mut u32, n: u32) -> u64 {
+    let key = *counter;
+    *counter = key.wrapping_add(n);
+    u64::from(key)
+}
 
 /// Checks that a sampler gets at least one sample per pixel.
 pub(crate) fn check_spp(spp: u32) -> Result<(), crate::Error> {

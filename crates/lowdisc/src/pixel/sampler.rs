@@ -5,7 +5,8 @@
 
 use super::{
     BurleySampler, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
-    PixelSampler, PixelXorSampler, StratifiedSampler, ZSobolJointSampler, ZSobolSampler,
+    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZSobolJointSampler,
+    ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -27,6 +28,8 @@ pub enum Sampler {
     Burley(BurleySampler),
     /// Per-pixel Sobol with a random digital shift.
     PixelXor(PixelXorSampler),
+    /// PMJ02 / pmj02bn point sets.
+    Pmj(PmjSampler),
     /// Z-order Sobol padded by 4-D groups.
     ZSobolJoint(ZSobolJointSampler),
 }
@@ -43,6 +46,7 @@ macro_rules! dispatch {
             Sampler::ZSobol($inner) => $body,
             Sampler::Burley($inner) => $body,
             Sampler::PixelXor($inner) => $body,
+            Sampler::Pmj($inner) => $body,
             Sampler::ZSobolJoint($inner) => $body,
         }
     };
@@ -128,6 +132,12 @@ impl From<BurleySampler> for Sampler {
 impl From<PixelXorSampler> for Sampler {
     fn from(s: PixelXorSampler) -> Self {
         Sampler::PixelXor(s)
+    }
+}
+
+impl From<PmjSampler> for Sampler {
+    fn from(s: PmjSampler) -> Self {
+        Sampler::Pmj(s)
     }
 }
 

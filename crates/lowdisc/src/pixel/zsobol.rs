@@ -240,15 +240,13 @@ impl WordSampler for ZSobolSampler {
     }
 
     fn get_1d_word(&mut self) -> u32 {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(1);
+        let key = super::next_key(&mut self.dimension, 1);
         let [word] = self.words(key);
         word
     }
 
     fn get_2d_words(&mut self) -> [u32; 2] {
-        let key = u64::from(self.dimension);
-        self.dimension = self.dimension.wrapping_add(2);
+        let key = super::next_key(&mut self.dimension, 2);
         self.words(key)
     }
 

@@ -127,6 +127,20 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
         ],
     ),
     (
+        SamplerName::Pmj02,
+        [
+            0xf6db0822, 0xffcd3362, 0xf94b3151, 0x6023ce55, 0x7b6e9f64, 0xa0beced9, 0xa8bac7e9,
+            0x0058f497, 0x1be39fc3, 0x26114b7b, 0x98b49f6f, 0x790c9c0b,
+        ],
+    ),
+    (
+        SamplerName::Pmj02Bn,
+        [
+            0xcca8b99a, 0xd538e6a5, 0xf94b3151, 0x76db0822, 0x7fcd3362, 0x8a0a1c14, 0xa8bac7e9,
+            0x0058f497, 0x20beced9, 0x26114b7b, 0x98b49f6f, 0x790c9c0b,
+        ],
+    ),
+    (
         SamplerName::ZSobol4d,
         [
             0x426c6544, 0xbf5b2cb1, 0xce7b0651, 0xece2aba9, 0x4357db37, 0x08140ddc, 0x2c09a2a6,
