@@ -25,7 +25,7 @@
 //! | `pmj02` | generated PMJ02 sets, per-pixel permuted | pixel (0,0) of a 1x1 image |
 //! | `pmj02bn` | generated pmj02bn (blue-noise) sets | pixel (0,0) of a 1x1 image |
 //! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
-//! | `zsobol-joint` | Z-order Sobol, 4-D groups for the path tracer | pixel (0,0) of a 1x1 image |
+//! | `zsobol-joint` | Z-order Sobol, 4-D groups per path vertex | pixel (0,0) of a 1x1 image |
 
 mod points;
 
@@ -92,8 +92,8 @@ pub enum SamplerName {
     Pmj02Bn,
     /// `zsobol-4d`: Z-order Sobol padded by 4-D groups in Burley's order.
     ZSobol4d,
-    /// `zsobol-joint`: Z-order Sobol padded by 4-D groups chosen for the
-    /// path tracer (film position with the first light sample).
+    /// `zsobol-joint`: Z-order Sobol padded by 4-D groups aligned with the
+    /// path tracer's scattering vertices.
     ZSobolJoint,
 }
 
@@ -178,7 +178,7 @@ impl SamplerName {
             SamplerName::Pmj02Bn => "pmj02 with best-candidate blue-noise placement (pmj02bn)",
             SamplerName::ZSobol4d => "Z-order Sobol padded by 4-D groups in Burley's order",
             SamplerName::ZSobolJoint => {
-                "Z-order Sobol padded by 4-D groups: film position with the first light sample"
+                "Z-order Sobol padded by 4-D groups aligned with the path tracer's vertices"
             }
         }
     }

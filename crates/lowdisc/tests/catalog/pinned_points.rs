@@ -150,8 +150,8 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
     (
         SamplerName::ZSobolJoint,
         [
-            0x426c6544, 0xbf5b2cb1, 0x911484ba, 0xece2aba9, 0x4357db37, 0x4c12c501, 0x2c09a2a6,
-            0x016cdb50, 0xf28a8ad2, 0x8d901c03, 0xdd555887, 0x2bfc6edc,
+            0x426c6544, 0xbf5b2cb1, 0xce7b0651, 0xece2aba9, 0x4357db37, 0x08140ddc, 0x2c09a2a6,
+            0x016cdb50, 0x75e3a882, 0x8d901c03, 0xdd555887, 0x997eb713,
         ],
     ),
 ];
