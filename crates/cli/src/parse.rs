@@ -19,6 +19,20 @@ pub fn sampler_name(text: &str) -> Result<SamplerName> {
     })
 }
 
+/// The long help of a `--sampler` option: every catalog name with its
+/// one-line description.
+pub fn sampler_list() -> String {
+    let width = SamplerName::ALL.iter().map(|n| n.as_str().len()).max();
+    let lines = SamplerName::ALL.iter().map(|n| {
+        let pad = width.unwrap_or(0);
+        format!("  {:pad$}  {}", n.as_str(), n.description())
+    });
+    format!(
+        "Sampler name, one of:\n{}",
+        lines.collect::<Vec<_>>().join("\n")
+    )
+}
+
 /// A paper-permutation threshold in `[0, 1]` (NaN rejected).
 pub fn threshold(value: f64) -> Result<f64> {
     if (0.0..=1.0).contains(&value) {

@@ -34,12 +34,15 @@ Print points of a sequence, or the samples of one pixel.\n\
 \n\
 Sequence mode (default): prints the first N points of the sampler's\n\
 sequence in dimensions 0..D (or A..B), one point per line. The Sobol\n\
-family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro)\n\
+family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, sobol-lms, paper,\n\
+paper-repro)\n\
 prints in Gray-code order by default, so\n\
 `lowdisc points --sampler sobol --n 65536 --dims 1024 --format u32`\n\
 prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)\n\
-.random(65536) as the integers floor(x * 2^32). padded-sobol and zsobol\n\
-print the samples of pixel (0,0) of a 1x1 image with N samples per pixel.\n\
+.random(65536) as the integers floor(x * 2^32). The per-pixel samplers\n\
+(padded-sobol, padded-sobol-lms, zsobol, sobol-burley, laine-karras,\n\
+sobol-pixel-xor, pmj02, pmj02bn) print the samples of pixel (0,0) of a\n\
+1x1 image with N samples per pixel.\n\
 \n\
 Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a\n\
 --res image, prints the film position (X + ox, Y + oy), where (ox, oy) is\n\
@@ -55,10 +58,8 @@ the film positions inside the pixel.\n\
 /// The arguments of `points`.
 #[derive(Debug, Args)]
 pub struct PointsArgs {
-    /// Sampler name: independent, stratified, halton, halton-owen, sobol,
-    /// sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro,
-    /// padded-sobol, zsobol.
-    #[arg(long, short = 's', value_name = "NAME")]
+    /// Sampler name (`--help` lists them all).
+    #[arg(long, short = 's', value_name = "NAME", long_help = crate::parse::sampler_list())]
     sampler: String,
     /// Seed of every random choice.
     #[arg(long, default_value_t = 0)]

@@ -238,3 +238,17 @@ fn help_documents_the_scipy_order() {
         "{help}"
     );
 }
+
+#[test]
+fn help_lists_every_catalog_name_with_its_description() {
+    let out = lowdisc(&["points", "--help"]);
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    for name in lowdisc::catalog::SamplerName::ALL {
+        let line = help
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(name.as_str()));
+        let line = line.unwrap_or_else(|| panic!("{name} missing from:\n{help}"));
+        assert!(line.contains(name.description()), "{line}");
+    }
+}

@@ -52,6 +52,12 @@ impl PmjSampler {
     /// A sampler with `spp` samples per pixel (`1..=4096`).
     pub fn new(spp: u32, kind: PmjKind, seed: u64) -> Result<Self, Error> {
         super::check_spp(spp)?;
+        if spp > 1 << crate::pmj::MAX_LOG2 {
+            return Err(Error::InvalidSampleCount {
+                count: u64::from(spp),
+                reason: "the PMJ02 samplers take at most 4096 samples per pixel",
+            });
+        }
         let log2 = super::ceil_log2(u64::from(spp));
         let sets = (0..SETS as u64)
             .map(|k| pmj02(log2, kind, crate::hash::hash2(seed, k)))
