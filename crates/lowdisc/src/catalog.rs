@@ -24,6 +24,8 @@
 //! | `sobol-pixel-xor` | per-pixel Sobol, random digital shift | pixel (0,0) of a 1x1 image |
 //! | `pmj02` | generated PMJ02 sets, per-pixel permuted | pixel (0,0) of a 1x1 image |
 //! | `pmj02bn` | generated pmj02bn (blue-noise) sets | pixel (0,0) of a 1x1 image |
+//! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
+//! | `zsobol-joint` | Z-order Sobol, 4-D groups per path vertex | pixel (0,0) of a 1x1 image |
 
 mod points;
 
@@ -33,9 +35,9 @@ use core::str::FromStr;
 use crate::halton::HaltonRandomize;
 use crate::paper::check_threshold;
 use crate::pixel::{
-    BurleySampler, GlobalSobolMode, GlobalSobolSampler, HaltonSampler, IndependentSampler,
-    NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, Sampler, StratifiedSampler,
-    ZSobolSampler,
+    BurleySampler, GlobalSobolMode, GlobalSobolSampler, GroupLayout, HaltonSampler,
+    IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, Sampler,
+    StratifiedSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
@@ -88,11 +90,16 @@ pub enum SamplerName {
     Pmj02,
     /// `pmj02bn`: the blue-noise variant of `pmj02`.
     Pmj02Bn,
+    /// `zsobol-4d`: Z-order Sobol padded by 4-D groups in Burley's order.
+    ZSobol4d,
+    /// `zsobol-joint`: Z-order Sobol padded by 4-D groups aligned with the
+    /// path tracer's scattering vertices.
+    ZSobolJoint,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 19] = [
+    pub const ALL: [SamplerName; 21] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -112,6 +119,8 @@ impl SamplerName {
         SamplerName::SobolPixelXor,
         SamplerName::Pmj02,
         SamplerName::Pmj02Bn,
+        SamplerName::ZSobol4d,
+        SamplerName::ZSobolJoint,
     ];
 
     /// The name as written on the command line.
@@ -136,6 +145,8 @@ impl SamplerName {
             SamplerName::SobolPixelXor => "sobol-pixel-xor",
             SamplerName::Pmj02 => "pmj02",
             SamplerName::Pmj02Bn => "pmj02bn",
+            SamplerName::ZSobol4d => "zsobol-4d",
+            SamplerName::ZSobolJoint => "zsobol-joint",
         }
     }
 
@@ -165,6 +176,10 @@ impl SamplerName {
             SamplerName::SobolPixelXor => "per-pixel Sobol with a random digital shift per pixel",
             SamplerName::Pmj02 => "progressive multi-jittered (0,2) sets (Christensen et al. 2018)",
             SamplerName::Pmj02Bn => "pmj02 with best-candidate blue-noise placement (pmj02bn)",
+            SamplerName::ZSobol4d => "Z-order Sobol padded by 4-D groups in Burley's order",
+            SamplerName::ZSobolJoint => {
+                "Z-order Sobol padded by 4-D groups aligned with the path tracer's vertices"
+            }
         }
     }
 
@@ -181,6 +196,15 @@ impl SamplerName {
                 | SamplerName::Paper
                 | SamplerName::PaperRepro
         )
+    }
+
+    /// The 4-D group layout of the `zsobol-4d` and `zsobol-joint` names.
+    pub fn group_layout(self) -> Option<GroupLayout> {
+        match self {
+            SamplerName::ZSobol4d => Some(GroupLayout::Sequential),
+            SamplerName::ZSobolJoint => Some(GroupLayout::PathVertices),
+            _ => None,
+        }
     }
 
     /// The randomization strategy of the `sobol*` names (`None` for others).
@@ -316,6 +340,11 @@ impl SamplerConfig {
             SamplerName::SobolPixelXor => PixelXorSampler::new(spp, seed).map(Sampler::from),
             SamplerName::Pmj02 => PmjSampler::new(spp, PmjKind::Pmj02, seed).map(Sampler::from),
             SamplerName::Pmj02Bn => PmjSampler::new(spp, PmjKind::Pmj02Bn, seed).map(Sampler::from),
+            SamplerName::ZSobol4d | SamplerName::ZSobolJoint => {
+                let layout = self.name.group_layout().unwrap_or(GroupLayout::Sequential);
+                ZSobolJointSampler::new(spp, res, layout, RandomizeStrategy::FastOwen, seed)
+                    .map(Sampler::from)
+            }
         }
     }
 }

@@ -25,7 +25,7 @@ fn names_round_trip_and_are_distinct() {
         assert!(!n.description().is_empty());
         assert!(names[..i].iter().all(|m| *m != names[i]));
     }
-    assert_eq!(names.len(), 19);
+    assert_eq!(names.len(), 21);
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
@@ -122,6 +122,14 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     (
         SamplerName::Pmj02Bn,
         [0.18439686, 0.24341822, 0.8118019, 0.48934674, 0.9083149],
+    ),
+    (
+        SamplerName::ZSobol4d,
+        [0.9587626, 0.38267314, 0.58248913, 0.73361933, 0.016222775],
+    ),
+    (
+        SamplerName::ZSobolJoint,
+        [0.9587626, 0.38267314, 0.58248913, 0.73361933, 0.016222775],
     ),
 ];
 

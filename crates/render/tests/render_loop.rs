@@ -36,6 +36,7 @@ fn output_is_bit_identical_with_one_and_two_threads() {
     let scene = cornell_box([40, 24]).unwrap();
     for name in [
         SamplerName::ZSobol,
+        SamplerName::ZSobolJoint,
         SamplerName::Paper,
         SamplerName::Independent,
         SamplerName::Halton,

@@ -16,6 +16,8 @@
 //! * `padded-sobol`, `padded-sobol-lms`, `zsobol`, `sobol-burley`,
 //!   `laine-karras`, `sobol-pixel-xor`, `pmj02` and `pmj02bn` are pixel
 //!   samplers: their points are the `n`
+//!   `laine-karras`, `sobol-pixel-xor`, `zsobol-4d` and `zsobol-joint` are
+//!   pixel samplers: their points are the `n`
 //!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
 //!   the in-pixel offset, dimensions `2j + 2, 2j + 3` the `get_2d` pair at
 //!   sampler dimension `2j` (so a dimension's value does not depend on the
@@ -31,8 +33,8 @@ use crate::halton::{self, Halton, HaltonRandomize};
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::pixel::{
-    BurleySampler, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, WordSampler,
-    ZSobolSampler,
+    BurleySampler, GroupLayout, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler,
+    WordSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
@@ -196,6 +198,12 @@ pub fn generate_points(
                 PmjKind::Pmj02Bn
             };
             let mut s = PmjSampler::new(n, kind, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::ZSobol4d | SamplerName::ZSobolJoint => {
+            let layout = name.group_layout().unwrap_or(GroupLayout::Sequential);
+            let mut s =
+                ZSobolJointSampler::new(n, [1, 1], layout, RandomizeStrategy::FastOwen, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
     }

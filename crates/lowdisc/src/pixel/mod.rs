@@ -38,6 +38,7 @@ mod pmj;
 mod sampler;
 mod stratified;
 mod zsobol;
+mod zsobol_joint;
 
 pub use burley::{
     BurleySampler, NestedHash, PixelXorSampler, burley_word, laine_karras_scramble_reversed,
@@ -51,6 +52,7 @@ pub use pmj::PmjSampler;
 pub use sampler::Sampler;
 pub use stratified::StratifiedSampler;
 pub use zsobol::ZSobolSampler;
+pub use zsobol_joint::{GroupLayout, ZSobolJointSampler};
 
 /// The digit-word form of a pixel sampler: a sampler that produces 32-bit
 /// digit words (bit 31 = first binary digit) writes only these five methods

@@ -5,7 +5,8 @@
 
 use super::{
     BurleySampler, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
-    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZSobolSampler,
+    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZSobolJointSampler,
+    ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -29,6 +30,8 @@ pub enum Sampler {
     PixelXor(PixelXorSampler),
     /// PMJ02 / pmj02bn point sets.
     Pmj(PmjSampler),
+    /// Z-order Sobol padded by 4-D groups.
+    ZSobolJoint(ZSobolJointSampler),
 }
 
 /// Applies `$body` to the sampler inside whatever variant `$s` is.
@@ -44,6 +47,7 @@ macro_rules! dispatch {
             Sampler::Burley($inner) => $body,
             Sampler::PixelXor($inner) => $body,
             Sampler::Pmj($inner) => $body,
+            Sampler::ZSobolJoint($inner) => $body,
         }
     };
 }
@@ -134,5 +138,11 @@ impl From<PixelXorSampler> for Sampler {
 impl From<PmjSampler> for Sampler {
     fn from(s: PmjSampler) -> Self {
         Sampler::Pmj(s)
+    }
+}
+
+impl From<ZSobolJointSampler> for Sampler {
+    fn from(s: ZSobolJointSampler) -> Self {
+        Sampler::ZSobolJoint(s)
     }
 }

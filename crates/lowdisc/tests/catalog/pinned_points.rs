@@ -140,6 +140,20 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
             0x0058f497, 0x20beced9, 0x26114b7b, 0x98b49f6f, 0x790c9c0b,
         ],
     ),
+    (
+        SamplerName::ZSobol4d,
+        [
+            0x426c6544, 0xbf5b2cb1, 0xce7b0651, 0xece2aba9, 0x4357db37, 0x08140ddc, 0x2c09a2a6,
+            0x016cdb50, 0x75e3a882, 0x8d901c03, 0xdd555887, 0x997eb713,
+        ],
+    ),
+    (
+        SamplerName::ZSobolJoint,
+        [
+            0x426c6544, 0xbf5b2cb1, 0xce7b0651, 0xece2aba9, 0x4357db37, 0x08140ddc, 0x2c09a2a6,
+            0x016cdb50, 0x75e3a882, 0x8d901c03, 0xdd555887, 0x997eb713,
+        ],
+    ),
 ];
 
 #[test]
