@@ -50,6 +50,14 @@ pub struct PbrtLoader {
     objects: HashMap<String, Vec<ShapeDef>>,
     current_object: Option<(String, Vec<ShapeDef>)>,
     imports: Vec<StateStack>,
+    /// The main scene file (named in errors without a location).
+    pub(super) main_file: PathBuf,
+    /// Where `WorldBegin` was, once it was seen.
+    pub(super) world_begin: Option<Loc>,
+    /// The `AttributeBegin`/`TransformBegin` blocks still open.
+    pub(super) open_blocks: Vec<(&'static str, Loc)>,
+    /// Whether an infinite light took the `--envmap` override.
+    pub(super) envmap_used: bool,
 }
 
 impl PbrtLoader {
@@ -78,6 +86,10 @@ impl PbrtLoader {
             objects: HashMap::new(),
             current_object: None,
             imports: Vec::new(),
+            main_file: path.to_path_buf(),
+            world_begin: None,
+            open_blocks: Vec::new(),
+            envmap_used: false,
         }
     }
 
@@ -119,6 +131,15 @@ impl PbrtLoader {
                 }
             }
         };
+        if let Some(env) = &self.options.envmap_override
+            && !self.envmap_used
+        {
+            let msg = format!(
+                "the scene has no infinite light; the environment map {} is not used",
+                env.display()
+            );
+            self.warnings.warn_global(&msg);
+        }
         if self.counts.lights == 0 && self.counts.area_shapes == 0 {
             self.warnings
                 .warn_global("the scene has no lights; it will render black");
@@ -184,6 +205,7 @@ impl PbrtLoader {
 
 impl ParserTarget for PbrtLoader {
     fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult {
+        self.check_block(&directive, loc)?;
         match directive {
             Directive::Option(p) => {
                 let what = format!("Option \"{}\"", p.name);
@@ -301,6 +323,10 @@ impl ParserTarget for PbrtLoader {
             self.imports.push(self.state.clone());
         }
         Ok(())
+    }
+
+    fn end_of_files(&mut self) -> TargetResult {
+        self.check_end_of_files()
     }
 
     fn file_end(&mut self, _path: &Path, kind: FileKind) -> TargetResult {
