@@ -7,7 +7,7 @@ use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
 use crate::error::RenderError;
-use crate::film::FilmParams;
+use crate::film::{Film, FilmParams};
 use crate::filter::Filter;
 use crate::math::Transform;
 use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
@@ -58,6 +58,9 @@ pub struct PbrtLoader {
     pub(super) open_blocks: Vec<(&'static str, Loc)>,
     /// Whether an infinite light took the `--envmap` override.
     pub(super) envmap_used: bool,
+    /// Where the `Camera` and `Film` directives were (for their errors).
+    pub(super) camera_loc: Option<Loc>,
+    pub(super) film_loc: Option<Loc>,
 }
 
 impl PbrtLoader {
@@ -90,6 +93,8 @@ impl PbrtLoader {
             world_begin: None,
             open_blocks: Vec::new(),
             envmap_used: false,
+            camera_loc: None,
+            film_loc: None,
         }
     }
 
@@ -144,13 +149,22 @@ impl PbrtLoader {
             self.warnings
                 .warn_global("the scene has no lights; it will render black");
         }
+        // Camera and film errors name the directive's file:line:column.
+        let at = |loc: &Option<Loc>, what: String| {
+            let place = loc.as_ref().map(|l| format!("{l}: ")).unwrap_or_default();
+            RenderError::InvalidScene(format!("{place}{what}"))
+        };
+        Film::checked_bounds(&self.film).map_err(|e| at(&self.film_loc, e.to_string()))?;
         self.builder.set_camera(camera);
         self.builder.set_film(FilmSettings {
             params: self.film.clone(),
             filter: self.filter.clone(),
             exposure: 1.0,
         });
-        let scene = self.builder.build()?;
+        let scene = self.builder.build().map_err(|e| match e {
+            RenderError::Camera(e) => at(&self.camera_loc, format!("Camera: {e}")),
+            e => e,
+        })?;
         Ok(LoadedScene {
             scene,
             warnings: self.warnings.iter().map(ToString::to_string).collect(),
