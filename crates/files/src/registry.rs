@@ -95,7 +95,9 @@ pub(crate) fn create_temporary(destination: &Path) -> Result<(File, Temporary), 
     let file = builder.tempfile_in(folder_of(destination)).map_err(|e| {
         // The destination is what the user named; the random temporary
         // name that `tempfile` adds to its message would only confuse.
-        let e = e.raw_os_error().map_or(e, io::Error::from_raw_os_error);
+        let text = e.to_string();
+        let reason = text.split(" at path ").next().unwrap_or(&text);
+        let e = io::Error::new(e.kind(), reason.to_string());
         Error::new(destination, "cannot write", e)
     })?;
     let (file, path) = file.into_parts();

@@ -109,3 +109,12 @@ fn outputs_are_not_private_scratch_files() {
     std::fs::write(&plain, b"x").unwrap();
     assert_eq!(mode(&target), mode(&plain));
 }
+
+#[test]
+fn a_failed_creation_names_the_destination_not_the_temporary() {
+    let dir = scratch("names");
+    let err = write_bytes(dir.join("no/x.exr"), b"x")
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("no/x.exr") && !err.contains(".tmp"), "{err}");
+}

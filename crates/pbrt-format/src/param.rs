@@ -147,6 +147,8 @@ pub struct Param {
     /// Location of the `"type name"` declaration string.
     pub loc: Loc,
     used: AtomicBool,
+    /// Read by a single-value getter (`get_float`, `get_int`, ...).
+    read_as_single: AtomicBool,
 }
 
 impl Param {
@@ -158,12 +160,24 @@ impl Param {
             values,
             loc,
             used: AtomicBool::new(false),
+            read_as_single: AtomicBool::new(false),
         }
     }
 
     /// Whether a lookup has used this parameter (or [`Param::mark_used`] was called).
     pub fn is_used(&self) -> bool {
         self.used.load(Ordering::Relaxed)
+    }
+
+    /// Records that a single-value getter read the parameter.
+    pub fn mark_read_as_single(&self) {
+        self.read_as_single.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether a single-value getter read it although it holds no value or
+    /// several (pbrt-v4 refuses that; it is reported as a warning).
+    pub fn is_miscounted(&self) -> bool {
+        self.read_as_single.load(Ordering::Relaxed) && self.values.len() != 1
     }
 
     /// Marks the parameter used.
@@ -201,6 +215,7 @@ impl Clone for Param {
             values: self.values.clone(),
             loc: self.loc.clone(),
             used: AtomicBool::new(self.is_used()),
+            read_as_single: AtomicBool::new(self.read_as_single.load(Ordering::Relaxed)),
         }
     }
 }

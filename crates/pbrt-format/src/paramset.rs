@@ -103,12 +103,20 @@ impl ParamSet {
         Some(p)
     }
 
+    /// Records a single-value read of `name` (see [`Param::is_miscounted`]).
+    fn single(&self, name: &str, types: &[ParamType]) {
+        if let Some(p) = self.lookup(name, types) {
+            p.mark_read_as_single();
+        }
+    }
+
     fn floats_of(&self, name: &str, ty: ParamType) -> Option<&[f64]> {
         self.lookup(name, &[ty]).and_then(Param::floats)
     }
 
     /// First value of `"float name"`.
     pub fn get_float(&self, name: &str) -> Option<f64> {
+        self.single(name, &[ParamType::Float]);
         self.get_floats(name)?.first().copied()
     }
 
@@ -132,6 +140,7 @@ impl ParamSet {
 
     /// First value of `"integer name"`.
     pub fn get_int(&self, name: &str) -> Option<i64> {
+        self.single(name, &[ParamType::Integer]);
         self.get_ints(name)?.first().copied()
     }
 
@@ -142,6 +151,7 @@ impl ParamSet {
 
     /// First value of `"bool name"`.
     pub fn get_bool(&self, name: &str) -> Option<bool> {
+        self.single(name, &[ParamType::Bool]);
         match &self.lookup(name, &[ParamType::Bool])?.values {
             ParamValues::Bools(v) => v.first().copied(),
             _ => None,
@@ -160,6 +170,7 @@ impl ParamSet {
 
     /// First value of `"string name"`.
     pub fn get_string(&self, name: &str) -> Option<&str> {
+        self.single(name, &[ParamType::String]);
         self.get_strings(name)?.first().map(String::as_str)
     }
 
@@ -272,6 +283,15 @@ impl ParamSet {
     pub fn warn_unused(&self, context: &str, warnings: &mut Warnings) {
         for p in self.unused() {
             let message = format!("{context}: parameter \"{}\" is not used", p.declaration());
+            warnings.warn(&p.loc, message);
+        }
+        for p in self.params.iter().filter(|p| p.is_miscounted()) {
+            let n = p.values.len();
+            let using = if n == 0 { "the default" } else { "the first" };
+            let message = format!(
+                "{context}: parameter \"{}\" takes one value, got {n}; using {using}",
+                p.declaration()
+            );
             warnings.warn(&p.loc, message);
         }
     }

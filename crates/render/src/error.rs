@@ -95,18 +95,9 @@ impl std::fmt::Display for RenderError {
     }
 }
 
-impl std::error::Error for RenderError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            RenderError::Sampler(e) => Some(e),
-            RenderError::Camera(e) => Some(e),
-            RenderError::Geometry(e) => Some(e),
-            RenderError::Io { source, .. } => Some(source),
-            RenderError::Film(e) => Some(e),
-            _ => None,
-        }
-    }
-}
+/// No `source()`: every message above already contains its cause's, and a
+/// chain printer (`anyhow`'s `{:#}`) would print it twice.
+impl std::error::Error for RenderError {}
 
 impl From<lowdisc::Error> for RenderError {
     fn from(e: lowdisc::Error) -> Self {

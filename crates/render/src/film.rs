@@ -60,14 +60,8 @@ impl std::fmt::Display for FilmError {
     }
 }
 
-impl std::error::Error for FilmError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            FilmError::Image(e) => Some(e),
-            _ => None,
-        }
-    }
-}
+/// No `source()`: the message already contains the image error's.
+impl std::error::Error for FilmError {}
 
 impl From<ImageError> for FilmError {
     fn from(e: ImageError) -> Self {
@@ -277,8 +271,10 @@ pub struct Film {
 }
 
 impl Film {
-    /// A film from pbrt parameters.
-    pub fn new(params: &FilmParams) -> Result<Film, FilmError> {
+    /// The pixel bounds `params` ask for, after every check [`Film::new`]
+    /// makes, without allocating the film (a loader calls it to report a bad
+    /// crop window or sensor setting where the scene gives it).
+    pub fn checked_bounds(params: &FilmParams) -> Result<PixelBounds, FilmError> {
         let [w, h] = params.resolution;
         if w == 0 || h == 0 || w > i32::MAX as u32 || h > i32::MAX as u32 {
             return Err(FilmError::InvalidResolution(params.resolution));
@@ -318,6 +314,12 @@ impl Film {
                 params.max_component_value,
             ));
         }
+        Ok(bounds)
+    }
+
+    /// A film from pbrt parameters.
+    pub fn new(params: &FilmParams) -> Result<Film, FilmError> {
+        let bounds = Film::checked_bounds(params)?;
         let ratio = params.exposure_time * params.iso / 100.0;
         Ok(Film {
             full_resolution: params.resolution,

@@ -43,6 +43,7 @@ impl PbrtLoader {
         let file = ps.get_string("filename").map(|f| self.resolve(f));
         let path = match (self.options.envmap_override.clone(), file) {
             (Some(o), f) => {
+                self.envmap_used = true;
                 let what = match &f {
                     Some(f) => format!(
                         "environment map {} replaced by {}",

@@ -7,7 +7,7 @@ use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;
 use crate::camera::PerspectiveParams;
 use crate::error::RenderError;
-use crate::film::FilmParams;
+use crate::film::{Film, FilmParams};
 use crate::filter::Filter;
 use crate::math::Transform;
 use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
@@ -50,6 +50,17 @@ pub struct PbrtLoader {
     objects: HashMap<String, Vec<ShapeDef>>,
     current_object: Option<(String, Vec<ShapeDef>)>,
     imports: Vec<StateStack>,
+    /// The main scene file (named in errors without a location).
+    pub(super) main_file: PathBuf,
+    /// Where `WorldBegin` was, once it was seen.
+    pub(super) world_begin: Option<Loc>,
+    /// The `AttributeBegin`/`TransformBegin` blocks still open.
+    pub(super) open_blocks: Vec<(&'static str, Loc)>,
+    /// Whether an infinite light took the `--envmap` override.
+    pub(super) envmap_used: bool,
+    /// Where the `Camera` and `Film` directives were (for their errors).
+    pub(super) camera_loc: Option<Loc>,
+    pub(super) film_loc: Option<Loc>,
 }
 
 impl PbrtLoader {
@@ -78,6 +89,12 @@ impl PbrtLoader {
             objects: HashMap::new(),
             current_object: None,
             imports: Vec::new(),
+            main_file: path.to_path_buf(),
+            world_begin: None,
+            open_blocks: Vec::new(),
+            envmap_used: false,
+            camera_loc: None,
+            film_loc: None,
         }
     }
 
@@ -119,17 +136,35 @@ impl PbrtLoader {
                 }
             }
         };
+        if let Some(env) = &self.options.envmap_override
+            && !self.envmap_used
+        {
+            let msg = format!(
+                "the scene has no infinite light; the environment map {} is not used",
+                env.display()
+            );
+            self.warnings.warn_global(&msg);
+        }
         if self.counts.lights == 0 && self.counts.area_shapes == 0 {
             self.warnings
                 .warn_global("the scene has no lights; it will render black");
         }
+        // Camera and film errors name the directive's file:line:column.
+        let at = |loc: &Option<Loc>, what: String| {
+            let place = loc.as_ref().map(|l| format!("{l}: ")).unwrap_or_default();
+            RenderError::InvalidScene(format!("{place}{what}"))
+        };
+        Film::checked_bounds(&self.film).map_err(|e| at(&self.film_loc, e.to_string()))?;
         self.builder.set_camera(camera);
         self.builder.set_film(FilmSettings {
             params: self.film.clone(),
             filter: self.filter.clone(),
             exposure: 1.0,
         });
-        let scene = self.builder.build()?;
+        let scene = self.builder.build().map_err(|e| match e {
+            RenderError::Camera(e) => at(&self.camera_loc, format!("Camera: {e}")),
+            e => e,
+        })?;
         Ok(LoadedScene {
             scene,
             warnings: self.warnings.iter().map(ToString::to_string).collect(),
@@ -184,6 +219,7 @@ impl PbrtLoader {
 
 impl ParserTarget for PbrtLoader {
     fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult {
+        self.check_block(&directive, loc)?;
         match directive {
             Directive::Option(p) => {
                 let what = format!("Option \"{}\"", p.name);
@@ -301,6 +337,10 @@ impl ParserTarget for PbrtLoader {
             self.imports.push(self.state.clone());
         }
         Ok(())
+    }
+
+    fn end_of_files(&mut self) -> TargetResult {
+        self.check_end_of_files()
     }
 
     fn file_end(&mut self, _path: &Path, kind: FileKind) -> TargetResult {

@@ -18,6 +18,7 @@
 //! Relative file names are resolved against the directory of the main scene
 //! file, even inside included files (as pbrt-v4 does).
 
+mod blocks;
 mod lights;
 mod loader;
 mod materials;

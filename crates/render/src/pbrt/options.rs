@@ -30,6 +30,7 @@ impl PbrtLoader {
         ps: &ParamSet,
         loc: &Loc,
     ) -> Result<(), ParseError> {
+        self.camera_loc = Some(loc.clone());
         let camera_from_world = self.state.cur.ctm;
         let world_from_camera = camera_from_world.inverse();
         self.state.named.insert("camera".into(), world_from_camera);
@@ -71,6 +72,7 @@ impl PbrtLoader {
         ps: &ParamSet,
         loc: &Loc,
     ) -> Result<(), ParseError> {
+        self.film_loc = Some(loc.clone());
         if ty != "rgb" {
             self.warn(
                 loc,
