@@ -14,6 +14,15 @@ use std::time::{Duration, Instant};
 use indicatif::{ProgressBar, ProgressStyle};
 use lowdisc_experiment::{Estimate, Progress};
 
+/// Writes one line to stderr, ignoring failure: a full or closed stderr must
+/// not stop (or panic) a job whose progress nobody can read.
+macro_rules! note {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
+
 /// The least time between two progress lines off a terminal.
 pub const DEFAULT_INTERVAL: Duration = Duration::from_secs(3);
 /// A line at least this often off a terminal, whatever the percentage.
@@ -110,7 +119,7 @@ impl Reporter {
         match (self.mode, self.lock().as_ref().and_then(|c| c.bar.as_ref())) {
             (Mode::Quiet, _) => {}
             (_, Some(bar)) => bar.println(message),
-            (_, None) => eprintln!("{message}"),
+            (_, None) => note!("{message}"),
         }
     }
 
@@ -130,7 +139,7 @@ impl Reporter {
             bar
         });
         if bar.is_none() {
-            eprintln!("{name}");
+            note!("{name}");
         }
         let now = Instant::now();
         *self.lock() = Some(Current {
@@ -162,7 +171,7 @@ impl Reporter {
         let due = (tenth > c.last_tenth && since >= self.interval) || since >= MAX_SILENCE;
         if due && c.done < c.total {
             let eta = (c.total - c.done) as f64 / rate.max(1e-9);
-            eprintln!(
+            note!(
                 "  {:>3}%, {} elapsed, ETA {}, {}{}/s",
                 c.done * 100 / c.total.max(1),
                 duration(elapsed),
@@ -197,7 +206,7 @@ impl Reporter {
             } else {
                 " "
             };
-            eprintln!(
+            note!(
                 "{head} done in {} ({}{}/s)",
                 duration(elapsed.as_secs_f64()),
                 si(rate),
@@ -217,15 +226,15 @@ impl Reporter {
         }
         let total = self.start.elapsed().as_secs_f64().max(1e-9);
         let finished = self.finished.lock().unwrap_or_else(|e| e.into_inner());
-        eprintln!("time: {} in all", duration(total));
+        note!("time: {} in all", duration(total));
         let mut staged = 0.0;
         for (name, t) in finished.iter() {
             let t = t.as_secs_f64();
             staged += t;
-            eprintln!("  {:>5.1}%  {:>10}  {name}", 100.0 * t / total, duration(t));
+            note!("  {:>5.1}%  {:>10}  {name}", 100.0 * t / total, duration(t));
         }
         let other = (total - staged).max(0.0);
-        eprintln!(
+        note!(
             "  {:>5.1}%  {:>10}  other (loading, calibration, statistics, writing)",
             100.0 * other / total,
             duration(other)
@@ -233,7 +242,7 @@ impl Reporter {
         if files.is_empty() {
             return;
         }
-        eprintln!("files:");
+        note!("files:");
         let is_image = |p: &PathBuf| {
             matches!(
                 p.extension().and_then(|e| e.to_str()),
@@ -241,7 +250,7 @@ impl Reporter {
             )
         };
         for f in files.iter().filter(|f| !is_image(f)) {
-            eprintln!("  {}", f.display());
+            note!("  {}", f.display());
         }
         let images: Vec<&PathBuf> = files.iter().filter(|f| is_image(f)).collect();
         let mut folders: Vec<PathBuf> = images
@@ -254,7 +263,7 @@ impl Reporter {
                 .iter()
                 .filter(|f| f.parent() == Some(&folder))
                 .count();
-            eprintln!("  {}/: {n} images (.png, .exr)", folder.display());
+            note!("  {}/: {n} images (.png, .exr)", folder.display());
         }
     }
 }

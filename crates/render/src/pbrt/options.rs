@@ -130,6 +130,7 @@ impl PbrtLoader {
             ("sobol", _) => SamplerName::SobolFastOwen,
             ("zsobol", _) => SamplerName::ZSobol,
             ("paddedsobol", _) => SamplerName::PaddedSobol,
+            ("pmj02bn", _) => SamplerName::Pmj02Bn,
             ("independent", _) => SamplerName::Independent,
             ("stratified", _) => SamplerName::Stratified,
             (other, _) => {
