@@ -8,12 +8,22 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use clap::Args;
 use lowdisc::catalog::SamplerConfig;
 use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig, Progress, Silent};
+use lowdisc_render::preset::ScenePreset;
 
 use crate::parse;
+
+/// The path depth without a preset.
+const DEFAULT_MAX_DEPTH: u32 = 5;
+/// Resolution of a `--preset` experiment.
+const PRESET_RESOLUTION: [u32; 2] = [128, 128];
+/// Runs per sampler of a `--preset` experiment.
+const PRESET_RUNS: u32 = 16;
+/// Reference spp of a `--preset` experiment.
+const PRESET_REF_SPP: u32 = 4096;
 
 /// The long help of `experiment`.
 pub const LONG_ABOUT: &str = "\
@@ -27,13 +37,34 @@ a sun (no downloads). Defaults: 256x144, 16 spp, 3 runs, reference 1024 spp;\n\
 convergence from 1 to 1024 spp at half the resolution per side against its\n\
 own 8192-spp reference. --paper: 1280x720, 16 spp, 10 runs, reference 4096\n\
 spp, convergence to 1024 spp at 640x360. --quick: 32x32, 4 spp, 2 runs,\n\
-reference 64 spp, convergence up to 8 spp at 32x32 (for tests).";
+reference 64 spp, convergence up to 8 spp at 32x32 (for tests).\n\
+\n\
+--preset direct|gi: a built-in Cornell box instead, direct lighting (path\n\
+depth 1) or global illumination with depth of field (depth 5); defaults\n\
+128x128, 16 spp, 16 runs, reference 4096 spp.\n\
+\n\
+Besides the metrics over all pixels, every render is measured with directly\n\
+visible emitters (and the sky) masked with a border of --emitter-border\n\
+pixels, by the MSE of its error blurred by a Gaussian of --blur-sigma pixels,\n\
+and by NVIDIA's FLIP. The report gives mean ± standard error, 95 % intervals\n\
+(Student t) and the ratio to sobol from paired seeds with its interval, and\n\
+says \"not distinguishable\" where the interval contains 1.";
 
 /// The arguments of `experiment`.
 #[derive(Debug, Args)]
 pub struct ExperimentArgs {
     /// A pbrt-v4 scene file (omit for the built-in scene).
     scene: Option<PathBuf>,
+    /// A built-in comparison scene instead: `direct` (Cornell box, path depth
+    /// 1) or `gi` (Cornell box, depth 5, depth of field).
+    #[arg(long, value_name = "NAME", conflicts_with = "scene")]
+    preset: Option<String>,
+    /// Border in pixels around directly visible emitters left out of the masked metrics.
+    #[arg(long, value_name = "PX", default_value_t = lowdisc_experiment::quality::DEFAULT_EMITTER_BORDER)]
+    emitter_border: u32,
+    /// Standard deviation in pixels of the Gaussian of the blurred (perceptual) MSE.
+    #[arg(long, value_name = "S", default_value_t = lowdisc_experiment::quality::DEFAULT_BLUR_SIGMA)]
+    blur_sigma: f64,
     /// Samplers to compare, comma-separated.
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS)]
     samplers: Vec<String>,
@@ -64,9 +95,9 @@ pub struct ExperimentArgs {
     /// Paper permutation threshold of the paper's samplers (renders and point figure).
     #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
     threshold: f64,
-    /// Maximum path depth.
-    #[arg(long, value_name = "D", default_value_t = 5)]
-    maxdepth: u32,
+    /// Maximum path depth [default: the preset's, else 5].
+    #[arg(long, value_name = "D")]
+    maxdepth: Option<u32>,
     /// Worker threads [default: all cores].
     #[arg(long, value_name = "T")]
     threads: Option<usize>,
@@ -87,8 +118,17 @@ pub struct ExperimentArgs {
 impl ExperimentArgs {
     /// Checks every argument and builds the configuration.
     pub fn into_config(self) -> Result<Experiment> {
+        let preset = match self.preset.as_deref() {
+            None => None,
+            Some(name) => Some(ScenePreset::from_name(name).with_context(|| {
+                let names: Vec<&str> = ScenePreset::ALL.iter().map(|p| p.name()).collect();
+                format!("unknown --preset `{name}`; known: {}", names.join(", "))
+            })?),
+        };
         let (res, spp, runs, ref_spp, conv_max) = if self.quick {
             ([32, 32], 4, 2, 64, 8)
+        } else if preset.is_some() {
+            (PRESET_RESOLUTION, 16, PRESET_RUNS, PRESET_REF_SPP, 1024)
         } else if self.paper {
             ([1280, 720], 16, 10, 4096, 1024)
         } else {
@@ -136,6 +176,9 @@ impl ExperimentArgs {
         };
         let config = ExperimentConfig {
             scene: self.scene,
+            preset,
+            emitter_border: self.emitter_border,
+            blur_sigma: self.blur_sigma,
             samplers,
             spp,
             runs,
@@ -146,7 +189,9 @@ impl ExperimentArgs {
             conv_ref_spp,
             envmap: self.envmap,
             threshold: parse::threshold(self.threshold)?,
-            max_depth: self.maxdepth,
+            max_depth: self
+                .maxdepth
+                .unwrap_or(preset.map_or(DEFAULT_MAX_DEPTH, |p| p.max_depth())),
             threads: self.threads,
             out: self.out,
             command: std::env::args().collect(),

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use lowdisc::catalog::SamplerName;
+use lowdisc_render::preset::ScenePreset;
 
 /// The seed of the reference render.
 pub const REF_SEED: u64 = 0x0005_EED0_F2EF;
@@ -20,6 +21,14 @@ pub const MAX_SIDE: u32 = 16_384;
 pub struct ExperimentConfig {
     /// Scene file or `None` for the built-in scene.
     pub scene: Option<PathBuf>,
+    /// A built-in comparison scene (`lowdisc_render::preset`) instead of
+    /// the default built-in scene; never together with `scene`.
+    pub preset: Option<ScenePreset>,
+    /// Border in pixels around directly visible emitters left out of the
+    /// masked metrics ([`crate::quality`]).
+    pub emitter_border: u32,
+    /// Standard deviation in pixels of the blurred MSE's Gaussian.
+    pub blur_sigma: f64,
     /// Samplers, in the order given.
     pub samplers: Vec<SamplerName>,
     /// Samples per pixel.
@@ -97,6 +106,22 @@ impl ExperimentConfig {
             if !e.is_file() {
                 bail!("--envmap `{}` is not a file", e.display());
             }
+        }
+        if self.scene.is_some() && self.preset.is_some() {
+            bail!("a scene file and --preset cannot be used together");
+        }
+        if self.emitter_border > 64 {
+            bail!(
+                "--emitter-border must be at most 64 pixels, got {}",
+                self.emitter_border
+            );
+        }
+        let max_sigma = lowdisc_image::perceptual::MAX_SIGMA;
+        if !(self.blur_sigma > 0.0 && self.blur_sigma <= max_sigma) {
+            bail!(
+                "--blur-sigma must be in (0, {max_sigma}] pixels, got {}",
+                self.blur_sigma
+            );
         }
         if let Some(s) = &self.scene {
             if !s.is_file() {

@@ -12,7 +12,10 @@
 //! - [`reference`]: the converged reference render, cached on disk;
 //! - [`run`](mod@run): the repeated renders of every sampler and their convergence series;
 //! - [`sweep`]: the threshold sweep of the paper's method;
-//! - [`stats`]: mean and sd, ratios, log-log slopes, the cache key's hash;
+//! - [`quality`]: the emitter mask, masked errors, blurred MSE and FLIP of a render;
+//! - [`stats`]: mean and sd, mean ± SE with Student-t intervals, paired
+//!   ratios with intervals and verdicts, log-log slopes, the cache key's hash;
+//! - [`comparison`]: those statistics for every sampler and compared metric;
 //! - [`results`]: the numbers measured, as `results.json` holds them;
 //! - [`figure`]: the 2x2-pixel point figure's film positions and panels;
 //! - [`report`]: images, plots, `report.md`, `report.html`, `results.json`;
@@ -23,7 +26,9 @@
 //!
 //! - `report.md`, `report.html`: the table (mean ± sd of render time and of
 //!   MSE, relMSE, RMSE, MAE on linear radiance and on 8-bit sRGB, and the
-//!   relMSE ratio to `sobol`, the paper's baseline), the images with 4x
+//!   relMSE ratio to `sobol`, the paper's baseline), the statistics section
+//!   (masked, blurred and FLIP errors: mean ± SE, 95 % intervals, paired
+//!   ratios to `sobol` with intervals and verdicts), the images with 4x
 //!   nearest crops, per-pixel relative-squared-error heatmaps, the
 //!   convergence plot, the threshold sweep and the 2x2-pixel point figure;
 //! - `results.json`, schema (every number of the report):
@@ -34,11 +39,16 @@
 //!   {file, cached, time_s}, samplers: [{ name, description, deterministic,
 //!   time_s, mse, relmse, rmse, mae (linear, each {mean, sd}),
 //!   srgb8: {mse, relmse, rmse, mae} (each {mean, sd}),
-//!   relmse_ratio_to_sobol (number or null), runs: [{seed, time_s, linear:
-//!   {mse, relmse, rmse, mae}, srgb8: {...}}], convergence: [{spp, relmse}],
-//!   convergence_slope }], threshold_sweep: [{threshold, star_discrepancy,
-//!   relmse, srgb8_relmse}],
-//!   wall_time_s }`.
+//!   relmse_ratio_to_sobol (number or null), statistics: [{metric, summary:
+//!   {n, mean, sd, se, ci95: [lo, hi]}, ratio_to_baseline: {n, ratio, ci95,
+//!   log_ratio: {summary}, ratio_of_means, verdict} or null}] (metrics
+//!   masked_mse, masked_relmse, blurred_mse, flip, mse, relmse; see
+//!   [`comparison`]), runs: [{seed, time_s, linear: {mse, relmse, rmse, mae},
+//!   srgb8: {...}, quality: {masked: {mse, relmse, rmse, mae}, blurred_mse,
+//!   flip}}], convergence: [{spp, relmse}], convergence_slope }],
+//!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}],
+//!   kept_fraction, wall_time_s }`; settings also hold preset (name or null),
+//!   emitter_border, blur_sigma and baseline.
 //!
 //! The reference (`ref_spp` samples per pixel with `sobol-owen`, an
 //! unbiased randomised sampler, seed [`REF_SEED`]) is cached as PFM in
@@ -52,9 +62,11 @@
 //! own noise adds at most about 1/8 to the last point's relMSE. Every file
 //! is written to a temporary file and renamed into place.
 
+pub mod comparison;
 pub mod config;
 pub mod figure;
 pub mod progress;
+pub mod quality;
 pub mod reference;
 pub mod report;
 pub mod results;

@@ -7,6 +7,8 @@ use std::path::PathBuf;
 use lowdisc_image::{ErrorStats, RgbImage};
 use serde::Serialize;
 
+use crate::comparison::MetricStats;
+use crate::quality::Quality;
 use crate::stats::{MeanSd, ratio};
 
 /// One render's numbers.
@@ -20,6 +22,8 @@ pub struct RunResult {
     pub linear: ErrorStats,
     /// Errors on 8-bit sRGB.
     pub srgb8: ErrorStats,
+    /// Masked errors, blurred MSE and FLIP.
+    pub quality: Quality,
 }
 
 /// Mean and sd of the four metrics.
@@ -80,6 +84,9 @@ pub struct SamplerResult {
     pub srgb8: MetricSummary,
     /// Mean linear relMSE over `sobol`'s.
     pub relmse_ratio_to_sobol: Option<f64>,
+    /// Mean ± SE, 95 % interval and paired ratio to `sobol` of each compared
+    /// metric ([`crate::comparison`]).
+    pub statistics: Vec<MetricStats>,
     /// Every run.
     pub runs: Vec<RunResult>,
     /// relMSE against spp (seed 0).
@@ -123,6 +130,8 @@ pub struct Results {
     pub convergence_reference: ReferenceInfo,
     /// Threshold sweep of the paper's method.
     pub threshold_sweep: Vec<SweepPoint>,
+    /// Fraction of the pixels the masked metrics keep.
+    pub kept_fraction: f64,
 }
 
 /// Images kept for the report.
@@ -145,11 +154,12 @@ pub fn fill_ratios(samplers: &mut [SamplerResult]) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use lowdisc_image::error_metrics;
 
-    fn result(name: &str, relmse: f64) -> SamplerResult {
+    /// A sampler result with every summary at `relmse` and no runs.
+    pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
         let m = MeanSd {
             mean: relmse,
             sd: 0.0,
@@ -170,6 +180,7 @@ mod tests {
                 mae: m,
             },
             relmse_ratio_to_sobol: None,
+            statistics: Vec::new(),
             runs: Vec::new(),
             convergence: Vec::new(),
             convergence_slope: None,

@@ -12,8 +12,10 @@ use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{RenderOptions, render};
 use lowdisc_render::scene::Scene;
 
+use crate::comparison::fill_statistics;
 use crate::config::ExperimentConfig;
 use crate::progress::{Progress, Stage, samples};
+use crate::quality::Evaluator;
 use crate::reference::reference as render_reference;
 use crate::results::{
     ConvPoint, Images, MetricSummary, Results, RunResult, SamplerResult, fill_ratios,
@@ -40,6 +42,11 @@ fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result<(Scene, u6
         hash = fnv1a(hash, bytes);
     }
     let scene = match &config.scene {
+        None if config.preset.is_some() => {
+            let preset = config.preset.context("no preset")?;
+            hash = fnv1a(hash, preset.id().as_bytes());
+            preset.scene(config.resolution)?
+        }
         None => {
             hash = fnv1a(hash, scene::SCENE_ID.as_bytes());
             // The sky is decoded from the bytes already read for the hash.
@@ -98,6 +105,7 @@ fn measure_sampler(
     scene: &Scene,
     name: SamplerName,
     reference: &RgbImage,
+    evaluator: &Evaluator,
     stage: &Stage,
 ) -> Result<(SamplerResult, RgbImage)> {
     let mut runs = Vec::new();
@@ -112,6 +120,7 @@ fn measure_sampler(
             time_s: out.stats.time.as_secs_f64(),
             linear: m.linear,
             srgb8: m.srgb8,
+            quality: evaluator.measure(&out.image, reference)?,
         });
         match &first {
             None => first = Some(out.image),
@@ -133,6 +142,7 @@ fn measure_sampler(
         mae: lin.mae,
         srgb8: MetricSummary::of(&srgb8),
         relmse_ratio_to_sobol: None,
+        statistics: Vec::new(),
         runs,
         convergence_slope: None,
         convergence: Vec::new(),
@@ -177,6 +187,7 @@ pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<()> {
     let (mut scene, scene_hash) = load(config, observer)?;
     let (reference, ref_info) =
         render_reference(config, &scene, scene_hash, config.ref_spp, observer)?;
+    let evaluator = Evaluator::new(&scene, config.emitter_border, config.blur_sigma)?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();
     let per_sampler = u64::from(config.runs) * samples(config.resolution, config.spp);
@@ -190,12 +201,13 @@ pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<()> {
             config.spp
         );
         let stage = Stage::begin(observer, &title, per_sampler);
-        let (r, image) = measure_sampler(config, &scene, name, &reference, &stage)?;
+        let (r, image) = measure_sampler(config, &scene, name, &reference, &evaluator, &stage)?;
         stage.end();
         samplers.push(r);
         renders.push(image);
     }
     fill_ratios(&mut samplers);
+    fill_statistics(&mut samplers);
     let threshold_sweep = threshold_sweep(config, &scene, &reference, observer)?;
     // The convergence series: at `conv_res` against their own reference
     // (the main one when resolution and spp are the same).
@@ -227,6 +239,7 @@ pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<()> {
         reference: ref_info,
         convergence_reference: conv_ref_info,
         threshold_sweep,
+        kept_fraction: evaluator.kept_fraction(),
     };
     let images = Images { reference, renders };
     report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;

@@ -44,6 +44,10 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
         },
         "settings": {
             "scene": config.scene.as_ref().map_or("builtin".to_string(), |p| p.display().to_string()),
+            "preset": config.preset.map(|p| p.name()),
+            "emitter_border": config.emitter_border,
+            "blur_sigma": config.blur_sigma,
+            "baseline": crate::comparison::BASELINE,
             "width": config.resolution[0],
             "height": config.resolution[1],
             "spp": config.spp,
@@ -62,6 +66,7 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
         "convergence_reference": results.convergence_reference,
         "samplers": results.samplers,
         "threshold_sweep": results.threshold_sweep,
+        "kept_fraction": results.kept_fraction,
         "wall_time_s": wall,
     });
     Ok(serde_json::to_string_pretty(&value)?)

@@ -53,6 +53,9 @@ pub fn markdown(config: &ExperimentConfig, results: &Results, wall: f64) -> Stri
         "built-in scene (gold, aluminium, car-paint coated shapes, procedural sky)".to_string(),
         |p| format!("`{}`", p.display()),
     );
+    if let Some(p) = config.preset {
+        scene = format!("preset `{}`: {}", p.name(), p.description());
+    }
     if let Some(e) = &config.envmap {
         let _ = write!(
             scene,
@@ -84,6 +87,7 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
         config.conv_ref_spp
     );
     md.push_str(&table(results));
+    md.push_str(&super::statistics::section(config, results));
     md.push_str("\n## Images\n\nEach render is the seed-0 run; the crop is the central quarter magnified 4x; the heatmap is the per-pixel relative squared error (viridis, scaled to its 99th percentile).\n\n| sampler | render | crop | relative squared error |\n|---|---|---|---|\n");
     md.push_str("| reference | ![](reference.png) | ![](reference_crop.png) | |\n");
     for s in &results.samplers {
@@ -112,7 +116,10 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
 `{schema, command, version, git_hash, machine: {cpu, cores}, settings, reference: {file, cached, time_s}, \
 convergence_reference: {file, cached, time_s}, \
 samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, srgb8: {mse, relmse, rmse, mae}, \
-relmse_ratio_to_sobol, runs: [{seed, time_s, linear, srgb8}], convergence: [{spp, relmse}], convergence_slope}], \
-threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], wall_time_s}`; every metric summary is `{mean, sd}`.\n");
+relmse_ratio_to_sobol, statistics: [{metric, summary: {n, mean, sd, se, ci95}, ratio_to_baseline: \
+{n, ratio, ci95, log_ratio, ratio_of_means, verdict} or null}], \
+runs: [{seed, time_s, linear, srgb8, quality: {masked, blurred_mse, flip}}], convergence: [{spp, relmse}], convergence_slope}], \
+threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], kept_fraction, wall_time_s}`; \
+the other metric summaries are `{mean, sd}`.\n");
     md
 }

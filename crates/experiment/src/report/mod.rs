@@ -9,6 +9,7 @@ pub mod html;
 pub mod images;
 pub mod json;
 pub mod markdown;
+pub mod statistics;
 
 use std::path::Path;
 
