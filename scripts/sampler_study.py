@@ -48,7 +48,7 @@ METRICS = ["masked_mse", "mse", "relmse", "blurred_mse", "flip"]
 # The study's settings, one line per preset: resolution, runs, reference spp.
 SETTINGS = {
     "direct": ("128x128", 16, 4096),
-    "gi": ("128x128", 16, 4096),
+    "gi": ("64x64", 16, 1024),
 }
 SPP = 16
 
