@@ -21,7 +21,7 @@ the square root of the MSE ratio). The t factor is read back from
 results.json (its intervals' half-width over the standard error), so this
 script needs only the Python standard library.
 
-Usage: scripts/sampler_study.py [--lowdisc BIN] [--out DIR] [--tables-only]
+Usage: scripts/sampler_study.py [--lowdisc BIN] [--out DIR] [--runs LIST] [--tables-only]
 """
 
 import argparse
@@ -45,21 +45,22 @@ LMS_BASELINES = ["sobol", "paper", "paper-repro"]
 EXTRA = ["paper", "paper-repro"]
 SAMPLERS = [b[1] for b in BURLEY] + LMS + EXTRA
 METRICS = ["masked_mse", "mse", "relmse", "blurred_mse", "flip"]
-# The study's settings, one line per preset: resolution, runs, reference spp.
+# The study's runs: name (the output folder) -> preset, resolution, runs, reference spp.
 SETTINGS = {
-    "direct": ("128x128", 16, 4096),
-    "gi": ("64x64", 16, 1024),
+    "direct": ("direct", "128x128", 16, 4096),
+    "gi": ("gi", "128x128", 16, 4096),
+    "gi-64": ("gi", "64x64", 16, 1024),
 }
 SPP = 16
 
 
-def run(lowdisc, out, preset):
-    res, runs, ref_spp = SETTINGS[preset]
+def run(lowdisc, out, name):
+    preset, res, runs, ref_spp = SETTINGS[name]
     cmd = [
         lowdisc, "experiment", "--preset", preset, "--samplers", ",".join(SAMPLERS),
         "--res", res, "--runs", str(runs), "--spp", str(SPP), "--ref-spp", str(ref_spp),
         "--conv-max", "1", "--conv-res", res, "--conv-ref-spp", str(ref_spp),
-        "--out", str(out / preset),
+        "--out", str(out / name),
     ]
     print("+", " ".join(cmd), file=sys.stderr)
     subprocess.run(cmd, check=True)
@@ -108,8 +109,9 @@ def fmt_ratio(r):
     return f"{r[0]:.3f} [{r[1][0]:.3f}, {r[1][1]:.3f}]"
 
 
-def tables(path, preset):
+def tables(path, name):
     results = json.loads(path.read_text())
+    preset = SETTINGS[name][0]
     t = t_factor(results)
     by = {s["name"]: s for s in results["samplers"]}
     col = 2 if preset == "direct" else 3
@@ -173,12 +175,13 @@ def main():
     p.add_argument("--out", type=Path, default=Path("out/study"))
     p.add_argument("--tables-only", action="store_true",
                    help="only print the tables of existing results.json files")
-    p.add_argument("--presets", default="direct,gi")
+    p.add_argument("--runs", default="direct,gi,gi-64",
+                   help="which of the study's runs: " + ", ".join(SETTINGS))
     a = p.parse_args()
-    for preset in a.presets.split(","):
+    for name in a.runs.split(","):
         if not a.tables_only:
-            run(a.lowdisc, a.out, preset)
-        print(tables(a.out / preset / "results.json", preset))
+            run(a.lowdisc, a.out, name)
+        print(tables(a.out / name / "results.json", name))
 
 
 if __name__ == "__main__":
