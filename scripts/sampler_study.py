@@ -50,17 +50,23 @@ SETTINGS = {
     "direct": ("direct", "128x128", 16, 4096),
     "gi": ("gi", "128x128", 16, 4096),
     "gi-64": ("gi", "64x64", 16, 1024),
+    # The built-in showroom scene (no preset), with zsobol added; its
+    # convergence series at 128x72 against a 16-spp reference.
+    "builtin": (None, "256x144", 8, 1024),
 }
 SPP = 16
 
 
 def run(lowdisc, out, name):
     preset, res, runs, ref_spp = SETTINGS[name]
+    scene = ["--preset", preset] if preset else []
+    samplers = SAMPLERS if preset else SAMPLERS + ["zsobol"]
+    conv = ["--conv-res", res, "--conv-ref-spp", str(ref_spp)] if preset else [
+        "--conv-res", "128x72", "--conv-ref-spp", "16"]
     cmd = [
-        lowdisc, "experiment", "--preset", preset, "--samplers", ",".join(SAMPLERS),
+        lowdisc, "experiment", *scene, "--samplers", ",".join(samplers),
         "--res", res, "--runs", str(runs), "--spp", str(SPP), "--ref-spp", str(ref_spp),
-        "--conv-max", "1", "--conv-res", res, "--conv-ref-spp", str(ref_spp),
-        "--out", str(out / name),
+        "--conv-max", "1", *conv, "--out", str(out / name),
     ]
     print("+", " ".join(cmd), file=sys.stderr)
     subprocess.run(cmd, check=True)
@@ -114,10 +120,10 @@ def tables(path, name):
     preset = SETTINGS[name][0]
     t = t_factor(results)
     by = {s["name"]: s for s in results["samplers"]}
-    col = 2 if preset == "direct" else 3
+    col = {"direct": 2, "gi": 3}.get(preset)
     st = results["settings"]
     lines = [
-        f"### Preset `{preset}`: {st['width']}x{st['height']}, {st['spp']} spp, "
+        f"### {f'Preset `{preset}`' if preset else 'Built-in scene'}: {st['width']}x{st['height']}, {st['spp']} spp, "
         f"{st['runs']} seeds, reference {st['ref_spp']} spp `{st['ref_sampler']}`, "
         f"{100 * results['kept_fraction']:.1f} % of pixels kept by the mask, "
         f"wall {results['wall_time_s']:.0f} s",
@@ -127,9 +133,9 @@ def tables(path, name):
         "|---|---|---|---|---|---|---|---|---|",
     ]
     base = by["sobol"]
-    burley = {b[1]: b[col] for b in BURLEY}
-    for name in SAMPLERS:
-        s = by[name]
+    burley = {b[1]: b[col] for b in BURLEY} if col else {}
+    for s in results["samplers"]:
+        name = s["name"]
         mean, se, ci = summary(column(s, "rmse"), t)
         row = [f"`{name}`", f"{burley[name]:.4f}" if name in burley else "",
                f"{mean:.5f} ± {se:.5f}", f"[{ci[0]:.5f}, {ci[1]:.5f}]"]
@@ -149,7 +155,8 @@ def tables(path, name):
               "| ours, masked RMSE [95 % CI] | order |",
               "|---|---|---|---|---|---|---|"]
     for worse, better in zip(BURLEY, BURLEY[1:]):
-        row = [f"`{worse[1]}`", f"`{better[1]}`", f"{worse[col] / better[col]:.2f}"]
+        his = f"{worse[col] / better[col]:.2f}" if col else ""
+        row = [f"`{worse[1]}`", f"`{better[1]}`", his]
         for metric in ("rmse", "masked_rmse"):
             r = paired(column(by[worse[1]], metric), column(by[better[1]], metric), t)
             row += [fmt_ratio(r), "agrees" if r[1][0] > 1 else "contradicts"
