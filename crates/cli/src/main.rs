@@ -10,6 +10,18 @@
 //! Adding a subcommand: a new module with an `Args` struct (clap derive),
 //! `into_config` and `run`, plus one variant in [`Command`] and one arm in
 //! [`run`].
+//!
+//! Modules, one per subcommand and a few shared ones:
+//! - `points`, `figure`, `discrepancy` (with `metric_rows`, `pointfile`),
+//!   `spectrum`, `claim` (with `claim_report`), `render_cmd` (with
+//!   `render_stats`), `experiment`: the subcommands; the experiment itself is
+//!   the library `lowdisc-experiment`;
+//! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
+//! - `limits`: the default work and memory limits and their checks;
+//! - `output`: tabular output of points (text, CSV, u32, JSON);
+//! - `plots`: point-set scatter plots for `points --plot`;
+//! - `progress`: bars on a terminal, timed lines elsewhere, the summary;
+//! - `interrupt`: the SIGINT/SIGTERM handler that removes live temporaries.
 
 mod claim;
 mod claim_report;

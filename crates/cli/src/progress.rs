@@ -274,10 +274,11 @@ impl Progress for Reporter {
     }
     fn estimate(&self, e: &Estimate) {
         self.line(&format!(
-            "estimated time: {} for {}samples at {}samples/s (from a 1-spp calibration render)",
+            "estimated time: {} for {}samples at {}samples/s (from a {}-spp calibration render)",
             duration(e.seconds),
             si(e.samples as f64),
-            si(e.samples_per_second)
+            si(e.samples_per_second),
+            lowdisc_experiment::plan::CALIBRATION_SPP
         ));
     }
     fn begin(&self, name: &str, total: u64) {
