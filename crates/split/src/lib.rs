@@ -9,6 +9,10 @@
 //! scene, the settings that change pixels, the full image's resolution and
 //! film bounds, the window and the sample range.
 //!
+//! Parts are stored as EXR files (module `file`: [`write_part`],
+//! [`read_part`]; the schema is documented there) that image viewers show
+//! in place in the full image.
+//!
 //! **Exactness.** Merging the tiles of any split reproduces the single
 //! render bit for bit, for every sampler: each pixel comes from exactly one
 //! part and its sums are copied. Merging sample ranges adds each pixel's
@@ -17,9 +21,14 @@
 //! [`merge`] for the bound); merging the same parts always gives the same
 //! bits.
 
+mod file;
 mod merge;
 mod part;
 
+pub use file::{
+    HEADER_ATTRIBUTE, HEADER_FORMAT, MAX_PART_BYTES, PartError, decode_part, encode_part,
+    read_part, write_part,
+};
 pub use lowdisc_render::film::PixelSum;
 pub use merge::{MergeError, NamedPart, merge};
 pub use part::{PartInfo, RenderPart, scene_hash, settings};
