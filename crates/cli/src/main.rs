@@ -14,7 +14,8 @@
 //! Modules, one per subcommand and a few shared ones:
 //! - `points`, `figure`, `discrepancy` (with `metric_rows`, `pointfile`),
 //!   `spectrum`, `claim` (with `claim_report`), `render_cmd` (with
-//!   `render_stats`), `experiment`: the subcommands; the experiment itself is
+//!   `render_stats`), `split_cmd` (`merge`, and the parts `render` writes),
+//!   `experiment`: the subcommands; the experiment itself is
 //!   the library `lowdisc-experiment`;
 //! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
 //! - `limits`: the default work and memory limits and their checks;
@@ -40,6 +41,7 @@ mod progress;
 mod render_cmd;
 mod render_stats;
 mod spectrum;
+mod split_cmd;
 
 use std::io::{self, Write};
 use std::process::ExitCode;
@@ -78,6 +80,9 @@ enum Command {
     /// The paper's experiment: every sampler against a converged reference, with a report.
     #[command(long_about = experiment::LONG_ABOUT)]
     Experiment(experiment::ExperimentArgs),
+    /// Merge the parts of a split render (tiles, sample ranges) into one EXR.
+    #[command(long_about = split_cmd::LONG_ABOUT)]
+    Merge(split_cmd::MergeArgs),
 }
 
 /// Validates the subcommand's arguments and runs it.
@@ -90,6 +95,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Figure(args) => figure::run(&args.into_config()?),
         Command::Render(args) => render_cmd::run(&args.into_config()?),
         Command::Experiment(args) => experiment::run(&args.into_config()?),
+        Command::Merge(args) => split_cmd::run(&args),
         Command::Discrepancy(args) => {
             let config = args.into_config()?;
             discrepancy::run(&config, io::stdout().lock())

@@ -1,5 +1,6 @@
 //! Parsers for the structured command-line values (`--pixel X,Y`,
-//! `--res WxH`, `--dim-range A..B`, sampler names), each returning a
+//! `--res WxH`, `--dim-range A..B`, `--sample-range A..B`,
+//! `--pixel-bounds X0,X1,Y0,Y1`, sampler names), each returning a
 //! one-line error that says what was expected.
 
 use std::ops::Range;
@@ -7,6 +8,8 @@ use std::str::FromStr;
 
 use anyhow::{Context, Result, anyhow, bail};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
+use lowdisc_render::film::PixelBounds;
+use lowdisc_render::render::SampleRange;
 
 /// A sampler name, or an error listing every known name.
 pub fn sampler_name(text: &str) -> Result<SamplerName> {
@@ -72,17 +75,53 @@ pub fn resolution(text: &str) -> Result<[u32; 2]> {
 
 /// `A..B`: the dimensions `A` up to but excluding `B`, with `A < B`.
 pub fn dim_range(text: &str) -> Result<Range<u32>> {
+    half_open(text, "--dim-range", "2..4")
+}
+
+/// `A..B`: the sample indices `A` up to but excluding `B`, with `A < B`
+/// (whether `B` is within the samples per pixel is checked with the
+/// render's options).
+pub fn sample_range(text: &str) -> Result<SampleRange> {
+    half_open(text, "--sample-range", "0..8").map(|r| SampleRange::new(r.start, r.end))
+}
+
+/// `A..B` with `A < B` for `flag`.
+fn half_open(text: &str, flag: &str, example: &str) -> Result<Range<u32>> {
     let Some((a, b)) = text.split_once("..") else {
-        bail!("malformed --dim-range `{text}`: expected A..B (e.g. --dim-range 2..4)");
+        bail!("malformed {flag} `{text}`: expected A..B (e.g. {flag} {example})");
     };
     let (a, b) = (
-        number(a, "start", text, "--dim-range")?,
-        number(b, "end", text, "--dim-range")?,
+        number(a, "start", text, flag)?,
+        number(b, "end", text, flag)?,
     );
     if a >= b {
-        bail!("malformed --dim-range `{text}`: the start must be below the end (A..B excludes B)");
+        bail!("malformed {flag} `{text}`: the start must be below the end (A..B excludes B)");
     }
     Ok(a..b)
+}
+
+/// `X0,X1,Y0,Y1`: the pixels `X0 <= x < X1`, `Y0 <= y < Y1` (pbrt-v4's
+/// `pixelbounds` order), non-empty; whether they are inside the film is
+/// checked with the scene.
+pub fn pixel_bounds(text: &str) -> Result<PixelBounds> {
+    let flag = "--pixel-bounds";
+    let parts: Vec<&str> = text.split(',').collect();
+    let [x0, x1, y0, y1] = parts[..] else {
+        bail!("malformed {flag} `{text}`: expected X0,X1,Y0,Y1 (e.g. {flag} 0,64,0,32)");
+    };
+    let mut v = [0i32; 4];
+    for (out, (t, what)) in v
+        .iter_mut()
+        .zip([(x0, "X0"), (x1, "X1"), (y0, "Y0"), (y1, "Y1")])
+    {
+        let n = number(t, what, text, flag)?;
+        *out = i32::try_from(n)
+            .with_context(|| format!("malformed {flag} `{text}`: {what} is too large"))?;
+    }
+    if v[0] >= v[1] || v[2] >= v[3] {
+        bail!("malformed {flag} `{text}`: need X0 < X1 and Y0 < Y1 (the bounds exclude X1 and Y1)");
+    }
+    Ok(PixelBounds::new([v[0], v[2]], [v[1], v[3]]))
 }
 
 /// A sampler configuration from the common options, validated.
@@ -109,6 +148,9 @@ mod tests {
         assert_eq!(pixel(" 3, 4 ").unwrap(), [3, 4]);
         assert_eq!(resolution("1280x720").unwrap(), [1280, 720]);
         assert_eq!(dim_range("2..5").unwrap(), 2..5);
+        assert_eq!(sample_range("4..9").unwrap(), SampleRange::new(4, 9));
+        let b = PixelBounds::new([1, 3], [2, 7]);
+        assert_eq!(pixel_bounds("1,2,3,7").unwrap(), b);
         assert_eq!(sampler_name("sobol-owen").unwrap(), SamplerName::SobolOwen);
         assert_eq!(threshold(1.0).unwrap(), 1.0);
     }
@@ -123,6 +165,24 @@ mod tests {
             (resolution("0x4").map(|_| ()), "at least 1"),
             (dim_range("4..4").map(|_| ()), "start must be below"),
             (dim_range("4-5").map(|_| ()), "expected A..B"),
+            (
+                sample_range("3").map(|_| ()),
+                "--sample-range `3`: expected A..B",
+            ),
+            (sample_range("3..3").map(|_| ()), "start must be below"),
+            (pixel_bounds("0,4,0").map(|_| ()), "expected X0,X1,Y0,Y1"),
+            (
+                pixel_bounds("0,4,2,2").map(|_| ()),
+                "need X0 < X1 and Y0 < Y1",
+            ),
+            (
+                pixel_bounds("0,4,-1,2").map(|_| ()),
+                "Y0 `-1` is not a non-negative",
+            ),
+            (
+                pixel_bounds("0,4,0,4294967295").map(|_| ()),
+                "Y1 is too large",
+            ),
             (
                 sampler_name("sobel").map(|_| ()),
                 "known samplers: independent, stratified",

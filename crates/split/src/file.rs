@@ -255,7 +255,8 @@ pub fn write_part(path: &Path, part: &RenderPart) -> Result<(), PartError> {
 
 /// Reads the part file at `path` (a regular file of at most
 /// [`MAX_PART_BYTES`]).
+/// Every error names the file.
 pub fn read_part(path: &Path) -> Result<RenderPart, PartError> {
     let bytes = lowdisc_files::read_input_limited(path, MAX_PART_BYTES)?;
-    decode_part(&bytes)
+    decode_part(&bytes).map_err(|e| bad(format!("{}: {e}", path.display())))
 }

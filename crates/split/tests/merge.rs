@@ -49,6 +49,16 @@ fn split(scene: &Scene, o: RenderOptions, windows: &[Option<PixelBounds>]) -> Ve
         .collect()
 }
 
+/// How many sums of `a` and `b` differ in any bit (all of them when the
+/// sizes differ).
+fn differing(a: &RenderPart, b: &RenderPart) -> usize {
+    let (x, y) = (bits(a), bits(b));
+    if x.len() != y.len() {
+        return x.len().max(y.len());
+    }
+    x.iter().zip(&y).filter(|(p, q)| p != q).count()
+}
+
 fn bits(p: &RenderPart) -> Vec<u64> {
     p.sums
         .iter()
@@ -75,7 +85,7 @@ fn tile_merges_are_bit_identical_for_every_sampler() {
             parts.reverse();
             let merged = merge(&parts).unwrap();
             assert_eq!(merged.info, single.info, "{name}");
-            assert_eq!(bits(&merged), bits(&single), "{name}");
+            assert_eq!(differing(&merged, &single), 0, "{name}");
         }
     }
 }
@@ -97,7 +107,7 @@ fn a_window_does_not_change_its_pixels_with_the_thread_count() {
         "b",
     )
     .part;
-    assert_eq!(bits(&one), bits(&two));
+    assert_eq!(differing(&one, &two), 0);
 }
 
 #[test]
@@ -140,7 +150,7 @@ fn sample_range_merges_are_within_the_rounding_bound() {
         // The same parts in any order give the same bits.
         let mut shuffled = parts.clone();
         shuffled.rotate_left(1);
-        assert_eq!(bits(&merge(&shuffled).unwrap()), bits(&merged));
+        assert_eq!(differing(&merge(&shuffled).unwrap(), &merged), 0);
     }
 }
 

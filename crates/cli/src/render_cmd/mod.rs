@@ -10,24 +10,23 @@
 //! the time per phase to stdout. A scene file's own settings (sampler, spp,
 //! maxdepth, resolution, output file) apply unless a flag overrides them.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
+mod prepare;
+
+use std::collections::HashSet;
+use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
-use lowdisc_render::cornell::cornell_box;
-use lowdisc_render::film::PEAK_BYTES_PER_PIXEL;
-use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
-use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
-use lowdisc_render::render::{MAX_SPP, Progress, RenderOptions, render};
-use lowdisc_render::scene::Scene;
-use std::collections::HashSet;
+use lowdisc_render::film::PixelBounds;
+use lowdisc_render::integrator::PathIntegrator;
+use lowdisc_render::render::{Progress, RenderOptions, SampleRange, render};
 
 use crate::progress::Reporter;
 use crate::render_stats::{self, Phases};
-use crate::{limits, parse};
+use crate::{limits, parse, split_cmd};
+use prepare::{check_output, prepare, warn_once};
 
 /// The largest image side `--res` accepts.
 pub const MAX_SIDE: u32 = 16_384;
@@ -53,6 +52,15 @@ output is bit-identical for the same options whatever --threads is.\n\
 \n\
 Output: .exr (linear float), .png (8-bit sRGB), .pfm or .hdr, written to a\n\
 temporary file and renamed into place.\n\
+\n\
+Split renders: --pixel-bounds X0,X1,Y0,Y1 renders only those pixels (full-\n\
+image coordinates, inside the scene's Film pixelbounds/cropwindow) and\n\
+--sample-range A..B only sample indices A to B-1 of every pixel. Either one\n\
+writes a part: an EXR whose data window is the window and whose display\n\
+window is the full image, with the exact per-pixel sums and a header naming\n\
+the scene (hash), settings, window and range. `lowdisc merge OUT.exr PARTS..`\n\
+assembles parts: a merge of tiles equals the single render bit for bit (every\n\
+sampler); merged sample ranges equal it up to f64 rounding of the sums.\n\
 ";
 
 /// The arguments of `render`.
@@ -99,6 +107,14 @@ pub struct RenderArgs {
     /// Largest memory (MiB) of the film and its image.
     #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
     max_memory: u64,
+    /// Render only these pixels, `X0,X1,Y0,Y1` (half-open, full-image
+    /// coordinates), and write a part for `lowdisc merge`.
+    #[arg(long, value_name = "X0,X1,Y0,Y1", allow_hyphen_values = true)]
+    pixel_bounds: Option<String>,
+    /// Take only sample indices `A..B` (half-open, within 0..spp) of every
+    /// pixel, and write a part for `lowdisc merge`.
+    #[arg(long, value_name = "A..B")]
+    sample_range: Option<String>,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -138,6 +154,17 @@ pub struct RenderConfig {
     pub quiet: bool,
     /// Memory limit (MiB) of the film.
     pub max_memory: u64,
+    /// The pixels to render (`--pixel-bounds`).
+    pub window: Option<PixelBounds>,
+    /// The sample indices to take (`--sample-range`).
+    pub samples: Option<SampleRange>,
+}
+
+impl RenderConfig {
+    /// True when the render writes a part (a window or a sample range).
+    pub fn is_part(&self) -> bool {
+        self.window.is_some() || self.samples.is_some()
+    }
 }
 
 impl RenderArgs {
@@ -177,6 +204,16 @@ impl RenderArgs {
             stats: self.stats,
             quiet: self.quiet,
             max_memory: self.max_memory,
+            window: self
+                .pixel_bounds
+                .as_deref()
+                .map(parse::pixel_bounds)
+                .transpose()?,
+            samples: self
+                .sample_range
+                .as_deref()
+                .map(parse::sample_range)
+                .transpose()?,
         })
     }
 }
@@ -231,131 +268,6 @@ fn resolution(text: &str) -> Result<[u32; 2]> {
     Ok(res)
 }
 
-/// The output must have a known extension and an existing directory.
-fn check_output(path: &Path) -> Result<()> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    if !matches!(ext.as_deref(), Some("exr" | "png" | "pfm" | "hdr")) {
-        bail!(
-            "output `{}` must end in .exr, .png, .pfm or .hdr",
-            path.display()
-        );
-    }
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        bail!("output directory `{}` does not exist", dir.display());
-    }
-    Ok(())
-}
-
-/// Prints each distinct warning once to stderr (nothing with `--quiet`).
-fn warn_once(seen: &mut HashSet<String>, quiet: bool, warning: &str) {
-    if !quiet && seen.insert(warning.to_string()) {
-        let prefix = if warning.contains("warning:") {
-            ""
-        } else {
-            "warning: "
-        };
-        // A stderr that cannot be written (closed, full) loses the warning,
-        // not the render.
-        let _ = writeln!(std::io::stderr(), "{prefix}{warning}");
-    }
-}
-
-/// The scene, its render options and the output file, after applying the
-/// scene file's settings and then the command line's overrides.
-fn prepare(
-    config: &RenderConfig,
-    seen: &mut HashSet<String>,
-) -> Result<(Scene, RenderOptions, PathBuf)> {
-    let mut sampler = SamplerName::ZSobol;
-    let mut spp = 16;
-    let mut max_depth = 5;
-    let mut output = PathBuf::from("render.exr");
-    let scene = match &config.scene {
-        None => cornell_box(config.resolution.unwrap_or([512, 512]))?,
-        Some(path) => {
-            let options = LoadOptions {
-                envmap_override: config.envmap.clone(),
-            };
-            let loaded = load_pbrt_scene(path, &options)
-                .with_context(|| format!("cannot load scene `{}`", path.display()))?;
-            for w in &loaded.warnings {
-                warn_once(seen, config.quiet, w);
-            }
-            let s = &loaded.settings;
-            sampler = s.sampler.unwrap_or(sampler);
-            spp = s.spp.unwrap_or(spp);
-            max_depth = s.max_depth.unwrap_or(max_depth);
-            // The scene's values obey the limits of the flags that override them.
-            if config.spp.is_none() && !(1..=MAX_SPP).contains(&spp) {
-                bail!(
-                    "{}: pixelsamples {spp} must be between 1 and {MAX_SPP} (the --spp limit)",
-                    path.display()
-                );
-            }
-            if config.max_depth.is_none() && max_depth > MAX_DEPTH_LIMIT {
-                bail!(
-                    "{}: maxdepth {max_depth} must be at most {MAX_DEPTH_LIMIT} (the --maxdepth limit)",
-                    path.display()
-                );
-            }
-            if let Some(name) = &s.output {
-                output = scene_output(name);
-            }
-            loaded.scene
-        }
-    };
-    let mut scene = scene;
-    if let Some(r) = config.resolution {
-        scene.set_resolution(r)?;
-    }
-    let options = RenderOptions {
-        sampler: SamplerConfig {
-            seed: config.seed,
-            spp: config.spp.unwrap_or(spp),
-            threshold: config.threshold,
-            paper_all_dims: config.paper_all_dims,
-            ..SamplerConfig::new(config.sampler.unwrap_or(sampler))
-        },
-        integrator: PathIntegrator {
-            max_depth: config.max_depth.unwrap_or(max_depth),
-            ..PathIntegrator::default()
-        },
-        threads: config.threads,
-        tile_size: 16,
-        ..RenderOptions::default()
-    };
-    let output = config.output.clone().unwrap_or(output);
-    check_output(&output)?;
-    let [w, h] = scene.film().params.resolution;
-    let bytes = f64::from(w) * f64::from(h) * PEAK_BYTES_PER_PIXEL as f64;
-    limits::check_memory(&format!("a {w}x{h} film"), bytes, config.max_memory)?;
-    Ok((scene, options, output))
-}
-
-/// The output a scene's `Film` filename asks for, in the current directory;
-/// an extension this command cannot write becomes `.exr`.
-fn scene_output(name: &str) -> PathBuf {
-    let file = Path::new(name)
-        .file_name()
-        .map_or_else(|| PathBuf::from("render.exr"), PathBuf::from);
-    let ext = file
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    if matches!(ext.as_deref(), Some("exr" | "png" | "pfm" | "hdr")) {
-        file
-    } else {
-        file.with_extension("exr")
-    }
-}
-
 /// Loads (or builds) the scene, renders it and writes the image.
 pub fn run(config: &RenderConfig) -> Result<()> {
     let t0 = Instant::now();
@@ -368,7 +280,10 @@ pub fn run(config: &RenderConfig) -> Result<()> {
 
     let reporter = Reporter::new(config.quiet);
     let [w, h] = scene.film().params.resolution;
-    let total = u64::from(w) * u64::from(h) * u64::from(options.sampler.spp);
+    let pixels = options
+        .window
+        .map_or(u64::from(w) * u64::from(h), |b| b.area() as u64);
+    let total = pixels * u64::from(options.sample_range().len());
     let title = format!(
         "rendering {w}x{h}, {} spp with {}",
         options.sampler.spp, options.sampler.name
@@ -383,9 +298,13 @@ pub fn run(config: &RenderConfig) -> Result<()> {
         warn_once(&mut seen, config.quiet, w);
     }
     let t2 = Instant::now();
-    out.film
-        .write(&output, scene.film().exposure)
-        .with_context(|| format!("cannot write `{}`", output.display()))?;
+    if config.is_part() {
+        split_cmd::write_render_part(&output, &scene, &options, &out)?;
+    } else {
+        out.film
+            .write(&output, scene.film().exposure)
+            .with_context(|| format!("cannot write `{}`", output.display()))?;
+    }
     phases.write = t2.elapsed();
     reporter.line(&format!("wrote {}", output.display()));
     if config.stats {
