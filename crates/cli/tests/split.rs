@@ -250,6 +250,27 @@ fn bad_windows_and_ranges_are_refused_by_render() {
     }
 }
 
+#[test]
+fn a_part_of_a_huge_image_allocates_its_window_alone() {
+    let dir = temp_dir("split-huge");
+    // The whole 16384x16384 film would exceed the default memory limit.
+    let out = dir.join("corner.exr");
+    let flags = [
+        "--res",
+        "16384x16384",
+        "--spp",
+        "1",
+        "--pixel-bounds",
+        "8000,8008,8000,8004",
+    ];
+    render_to(&out, &flags);
+    let (w, h, _) = bits(&out);
+    assert_eq!((w, h), (8, 4));
+    let whole = lowdisc(&render_args(&dir.join("whole.exr"), &flags[..4]));
+    assert_eq!(whole.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&whole.stderr).contains("memory"));
+}
+
 /// A small pbrt-v4 scene whose film is cropped to its middle half.
 const CROPPED: &str = r#"LookAt 0 0 5  0 0 0  0 1 0
 Camera "perspective" "float fov" [40]

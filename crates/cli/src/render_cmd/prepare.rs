@@ -127,7 +127,11 @@ pub(super) fn prepare(
             output.display()
         );
     }
-    let [w, h] = scene.film().params.resolution;
+    // A part allocates its window alone.
+    let [w, h] = match config.window {
+        Some(b) => [b.width() as u32, b.height() as u32],
+        None => scene.film().params.resolution,
+    };
     let bytes = f64::from(w) * f64::from(h) * PEAK_BYTES_PER_PIXEL as f64;
     limits::check_memory(&format!("a {w}x{h} film"), bytes, config.max_memory)?;
     Ok((scene, options, output))

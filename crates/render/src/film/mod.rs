@@ -277,7 +277,20 @@ impl Film {
 
     /// A film from pbrt parameters.
     pub fn new(params: &FilmParams) -> Result<Film, FilmError> {
-        let bounds = Film::checked_bounds(params)?;
+        Film::with_window(params, None)
+    }
+
+    /// A film from pbrt parameters that stores only the pixels of `window`
+    /// inside its pixel bounds (all of them for `None`): the film of a
+    /// render of part of the image, allocated for that part alone.
+    pub fn with_window(
+        params: &FilmParams,
+        window: Option<PixelBounds>,
+    ) -> Result<Film, FilmError> {
+        let mut bounds = Film::checked_bounds(params)?;
+        if let Some(w) = window {
+            bounds = w.intersect(&bounds);
+        }
         let ratio = params.exposure_time * params.iso / 100.0;
         Ok(Film {
             full_resolution: params.resolution,
@@ -301,24 +314,6 @@ impl Film {
     /// The sensor's imaging ratio `exposure_time * iso / 100`.
     pub fn imaging_ratio(&self) -> f32 {
         self.acc.scale
-    }
-
-    /// The same film restricted to the pixels of `window` inside its bounds
-    /// (its sums are kept there and dropped elsewhere): the film of a render
-    /// of a window of the image.
-    pub fn restricted(&self, window: PixelBounds) -> Film {
-        let bounds = window.intersect(&self.acc.bounds);
-        let mut acc = Accumulator::new(bounds, self.acc.scale, self.acc.max_component);
-        for (k, p) in bounds.pixels().enumerate() {
-            if let Some(i) = self.acc.index(p) {
-                acc.pixels[k] = self.acc.pixels[i];
-            }
-        }
-        Film {
-            full_resolution: self.full_resolution,
-            filename: self.filename.clone(),
-            acc,
-        }
     }
 
     /// Every pixel's sums, row-major over [`Self::pixel_bounds`].

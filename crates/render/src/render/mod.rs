@@ -144,11 +144,13 @@ pub fn render(
     progress: &dyn ProgressSink,
 ) -> Result<RenderOutput, RenderError> {
     opts.validate()?;
-    let full = Film::new(&scene.film().params).map_err(RenderError::Film)?;
-    let window = opts.window_in(full.pixel_bounds())?;
+    let params = &scene.film().params;
+    let full = Film::checked_bounds(params).map_err(RenderError::Film)?;
+    let window = opts.window_in(full)?;
     let range = opts.sample_range();
+    let mut film = Film::with_window(params, Some(window)).map_err(RenderError::Film)?;
     let sampler = SamplerConfig {
-        resolution: full.full_resolution(),
+        resolution: film.full_resolution(),
         ..opts.sampler
     }
     .build()?;
@@ -157,12 +159,11 @@ pub fn render(
         warnings.push("the scene has no lights: the image is black".to_string());
     }
     // The whole film's tile grid, numbered before the window is applied.
-    let rects: Vec<(u64, PixelBounds)> = (full.pixel_bounds().tiles(opts.tile_size).into_iter())
+    let rects: Vec<(u64, PixelBounds)> = (full.tiles(opts.tile_size).into_iter())
         .enumerate()
         .filter(|(_, r)| r.intersect(&window).area() > 0)
         .map(|(k, r)| (k as u64, r))
         .collect();
-    let mut film = full.restricted(window);
     let total = Totals {
         tiles: rects.len(),
         samples: window.area() as u64 * u64::from(range.len()),
