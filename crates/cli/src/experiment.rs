@@ -5,6 +5,8 @@
 //! `--paper`, defaults of the convergence series) and handed to
 //! [`lowdisc_experiment::run`], which does the work and writes the report
 //! folder; the progress it reports is printed on stderr unless `--quiet`.
+//! `experiment plan|unit|merge|status` (the same run cut into units) are in
+//! [`crate::experiment_units`].
 
 use std::path::PathBuf;
 
@@ -14,6 +16,7 @@ use lowdisc::catalog::SamplerConfig;
 use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig};
 use lowdisc_render::preset::ScenePreset;
 
+use crate::experiment_units::Action;
 use crate::parse;
 use crate::progress::Reporter;
 
@@ -57,7 +60,12 @@ visible emitters (and the sky) masked with a border of --emitter-border\n\
 pixels, by the MSE of its error blurred by a Gaussian of --blur-sigma pixels,\n\
 and by NVIDIA's FLIP. The report gives mean ± standard error, 95 % intervals\n\
 (Student t) and the ratio to sobol from paired seeds with its interval, and\n\
-says \"not distinguishable\" where the interval contains 1.";
+says \"not distinguishable\" where the interval contains 1.\n\
+\n\
+The same run cut into independent units for a cluster: `experiment plan\n\
+[these options] --out DIR`, then `experiment unit DIR --index I` for every\n\
+unit (any order, any machine), `experiment status DIR`, `experiment merge\n\
+DIR` (the same report, results.json and images).";
 
 /// The arguments of `experiment`.
 #[derive(Debug, Args)]
@@ -223,6 +231,41 @@ pub struct Experiment {
     config: ExperimentConfig,
     /// No progress, estimate or summary on stderr.
     quiet: bool,
+}
+
+impl Experiment {
+    /// The experiment's settings.
+    pub fn config(&self) -> &ExperimentConfig {
+        &self.config
+    }
+
+    /// Whether `--quiet` was given.
+    pub fn quiet(&self) -> bool {
+        self.quiet
+    }
+}
+
+/// `experiment`: the one-machine run, or one of the subcommands of a run
+/// cut into units ([`crate::experiment_units`]).
+#[derive(Debug, Args)]
+#[command(args_conflicts_with_subcommands = true)]
+pub struct ExperimentCommand {
+    /// A subcommand of the run cut into units.
+    #[command(subcommand)]
+    action: Option<Action>,
+    /// The one-machine run's arguments.
+    #[command(flatten)]
+    args: ExperimentArgs,
+}
+
+impl ExperimentCommand {
+    /// Runs the one-machine experiment or the subcommand.
+    pub fn run(self) -> Result<()> {
+        match self.action {
+            Some(action) => crate::experiment_units::run(action, std::io::stdout().lock()),
+            None => run(&self.args.into_config()?),
+        }
+    }
 }
 
 /// Runs the experiment, printing its progress and a summary unless `--quiet`.

@@ -15,8 +15,8 @@
 //! - `points`, `figure`, `discrepancy` (with `metric_rows`, `pointfile`),
 //!   `spectrum`, `claim` (with `claim_report`), `render_cmd` (with
 //!   `render_stats`), `split_cmd` (`merge`, and the parts `render` writes),
-//!   `experiment`: the subcommands; the experiment itself is
-//!   the library `lowdisc-experiment`;
+//!   `experiment` (with `experiment_units`: plan, unit, merge, status): the
+//!   subcommands; the experiment itself is the library `lowdisc-experiment`;
 //! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
 //! - `limits`: the default work and memory limits and their checks;
 //! - `output`: tabular output of points (text, CSV, u32, JSON);
@@ -28,6 +28,7 @@ mod claim;
 mod claim_report;
 mod discrepancy;
 mod experiment;
+mod experiment_units;
 mod figure;
 mod interrupt;
 mod limits;
@@ -79,7 +80,7 @@ enum Command {
     Render(render_cmd::RenderArgs),
     /// The paper's experiment: every sampler against a converged reference, with a report.
     #[command(long_about = experiment::LONG_ABOUT)]
-    Experiment(experiment::ExperimentArgs),
+    Experiment(Box<experiment::ExperimentCommand>),
     /// Merge the parts of a split render (tiles, sample ranges) into one EXR.
     #[command(long_about = split_cmd::LONG_ABOUT)]
     Merge(split_cmd::MergeArgs),
@@ -94,7 +95,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         }
         Command::Figure(args) => figure::run(&args.into_config()?),
         Command::Render(args) => render_cmd::run(&args.into_config()?),
-        Command::Experiment(args) => experiment::run(&args.into_config()?),
+        Command::Experiment(command) => command.run(),
         Command::Merge(args) => split_cmd::run(&args),
         Command::Discrepancy(args) => {
             let config = args.into_config()?;

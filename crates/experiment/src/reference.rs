@@ -1,43 +1,62 @@
-//! The converged reference render, cached on disk under a key of the
-//! scene's content and every setting that changes the image.
+//! The converged reference renders (the main one and the convergence
+//! series' own), cached on disk under a key of the scene's content and
+//! every setting that changes the image; a reference that is not cached
+//! is a unit of the plan ([`crate::plan`]).
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use lowdisc_image::RgbImage;
-use lowdisc_render::render::render;
-use lowdisc_render::scene::Scene;
 
+use crate::assemble::{Cursor, UnitSource};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::plan::{Plan, Target, Work, reference_parts, reference_settings};
 use crate::progress::{Progress, Stage, samples};
 use crate::results::ReferenceInfo;
-use crate::run::options;
 use crate::stats::{FNV_OFFSET, fnv1a};
 
-/// The reference of `scene` at its film's resolution (part of the cache
-/// key) with `spp` samples per pixel, from the cache when present.
-pub fn reference(
-    config: &ExperimentConfig,
-    scene: &Scene,
-    scene_hash: u64,
-    spp: u32,
+/// Whether the main and the convergence reference are in the cache (and
+/// readable) for the scene whose content hashes to `scene_hash`.
+pub fn cached_references(config: &ExperimentConfig, scene_hash: u64) -> [bool; 2] {
+    [Target::Main, Target::Convergence].map(|target| {
+        let (resolution, spp) = reference_settings(config, target);
+        let file = cache_file(config, resolution, scene_hash, spp);
+        file.is_file() && lowdisc_image::read_image(&file).is_ok()
+    })
+}
+
+/// Reference `target` of the plan: read from the cache when the plan says
+/// it is cached, else stacked from its bands (the next units of `cursor`),
+/// whose render times add up, and written to the cache.
+pub(crate) fn reference(
+    plan: &Plan,
+    target: Target,
+    cursor: &mut Cursor,
+    source: &mut dyn UnitSource,
     observer: &dyn Progress,
 ) -> Result<(RgbImage, ReferenceInfo)> {
-    let resolution = scene.film().params.resolution;
-    let file = cache_file(config, resolution, scene_hash, spp);
+    let config = &plan.config;
+    let (resolution, spp) = reference_settings(config, target);
+    let file = cache_file(config, resolution, plan.scene_hash, spp);
     let dir = cache_dir(&config.out);
-    if file.is_file() {
-        if let Ok(image) = lowdisc_image::read_image(&file) {
-            observer.note(&format!("reusing cached reference {}", file.display()));
-            return Ok((
-                image,
-                ReferenceInfo {
-                    file,
-                    cached: true,
-                    time_s: 0.0,
-                },
-            ));
-        }
+    let cached = match target {
+        Target::Main => plan.cached[0],
+        Target::Convergence => plan.cached[1],
+    };
+    if cached {
+        let image = lowdisc_image::read_image(&file).with_context(|| {
+            format!(
+                "the planned reference `{}` cannot be read; plan again",
+                file.display()
+            )
+        })?;
+        observer.note(&format!("reusing cached reference {}", file.display()));
+        let info = ReferenceInfo {
+            file,
+            cached: true,
+            time_s: 0.0,
+        };
+        return Ok((image, info));
     }
     let title = format!(
         "rendering reference: {}x{}, {} spp with {}",
@@ -47,20 +66,38 @@ pub fn reference(
         REF_SAMPLER.as_str()
     );
     let stage = Stage::begin(observer, &title, samples(resolution, spp));
-    let out = render(scene, &options(config, REF_SAMPLER, REF_SEED, spp), &stage)?;
-    stage.finished_render(out.stats.samples);
+    // The bands, from the top, stacked.
+    let parts = reference_parts(config, target);
+    let (mut width, mut pixels, mut time_s) = (0, Vec::new(), 0.0);
+    for part in 0..parts {
+        let unit = cursor.next(Work::Reference {
+            target,
+            part,
+            parts,
+        })?;
+        let out = source.output(unit, &stage)?;
+        if part > 0 && out.image.width() != width {
+            bail!(
+                "the bands of the reference differ in width ({width} and {} pixels)",
+                out.image.width()
+            );
+        }
+        width = out.image.width();
+        pixels.extend_from_slice(out.image.pixels());
+        time_s += out.render_time_s;
+    }
     stage.end();
+    let height = pixels.len() / width.max(1);
+    let image = RgbImage::from_pixels(width, height, pixels)?;
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;
-    lowdisc_image::write_pfm(&file, &out.image)?;
+    lowdisc_image::write_pfm(&file, &image)?;
     observer.note(&format!("cached reference in {}", file.display()));
-    Ok((
-        out.image,
-        ReferenceInfo {
-            file,
-            cached: false,
-            time_s: out.stats.time.as_secs_f64(),
-        },
-    ))
+    let info = ReferenceInfo {
+        file,
+        cached: false,
+        time_s,
+    };
+    Ok((image, info))
 }
 
 /// The cache file of the reference at `resolution` with `spp` samples of
