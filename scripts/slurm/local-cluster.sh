@@ -93,6 +93,9 @@ TaskPlugin=task/none
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 SchedulerType=sched/backfill
+# Slurm schedules at most every batch_sched_delay s (default 3) after a job
+# ends; on one node with short units that delay would dominate.
+SchedulerParameters=batch_sched_delay=0
 MpiDefault=none
 MailProg=/bin/true
 JobAcctGatherType=jobacct_gather/none
