@@ -23,8 +23,9 @@
 #   --partition P       sbatch --partition=P for every job
 #   --time T            sbatch --time=T (a unit's time limit; also the merge's)
 #   --max-running K     at most K units at once (the array's %K; default: no limit)
-#   --cpus-per-task C   cores per unit (sbatch --cpus-per-task; lowdisc renders
-#                       on the cores its task may use)
+#   --cpus-per-task C   cores per unit: sbatch --cpus-per-task=C and the
+#                       unit's --threads C (default: Slurm's one core per
+#                       task, and the unit renders on every core it may use)
 #   --sbatch-arg ARG    one more sbatch argument for every job (repeatable),
 #                       e.g. --sbatch-arg=--account=rendering
 #   --lowdisc BIN       the lowdisc binary (default: $LOWDISC, else `lowdisc`
@@ -32,8 +33,8 @@
 #   --parallel          run the units here with GNU parallel instead of Slurm:
 #                         parallel lowdisc experiment unit DIR --index {} ::: $(seq 0 N-1)
 #                       then the merge; waits, and fails if any unit failed
-#   --jobs J            GNU parallel: units at once (default 1; each unit
-#                       already uses every core)
+#   --jobs J            GNU parallel: units at once (default 1; a unit uses
+#                       every core unless --cpus-per-task is given)
 #   --parallel-arg ARG  one more argument for GNU parallel (repeatable), e.g.
 #                       --parallel-arg=--sshloginfile=nodes.txt to fan out over ssh
 set -euo pipefail
@@ -134,13 +135,15 @@ echo "experiment.sh: $units units in $plan"
 
 q_lowdisc=$(printf %q "$lowdisc")
 q_dir=$(printf %q "$dir")
+threads=""
+[ -z "$cpus" ] || threads=" --threads $cpus"
 
 if [ "$runner" = parallel ]; then
   command -v parallel >/dev/null 2>&1 || die "GNU parallel is not installed (Debian: apt-get install parallel)"
   mapfile -t indices < <(seq 0 "$last")
   failed=0
   parallel --jobs "$jobs" "${parallel_extra[@]}" \
-    "$q_lowdisc" experiment unit "$q_dir" --index '{}' ::: "${indices[@]}" || failed=$?
+    "$q_lowdisc experiment unit $q_dir --index {}$threads" ::: "${indices[@]}" || failed=$?
   [ "$failed" -eq 0 ] || die "$failed unit(s) failed (see $dir/units/*.failed; rerun the same command to retry them)"
   "$lowdisc" experiment merge "$dir"
   exit 0
@@ -167,7 +170,7 @@ for ((offset = 0; offset < units; offset += chunk)); do
   job=$(sbatch --parsable "${common[@]}" "${unit_opts[@]}" \
     --job-name=lowdisc-unit --array="0-$((size - 1))$throttle" \
     --output="$dir/slurm/unit-%A_%a.out" \
-    --wrap="exec $q_lowdisc experiment unit $q_dir --index \$((SLURM_ARRAY_TASK_ID + $offset))")
+    --wrap="exec $q_lowdisc experiment unit $q_dir --index \$((SLURM_ARRAY_TASK_ID + $offset))$threads")
   job=${job%%;*}
   array_jobs+=("$job")
   echo "experiment.sh: units $offset..$((offset + size - 1)): array job $job"
