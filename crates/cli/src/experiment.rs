@@ -5,6 +5,8 @@
 //! `--paper`, defaults of the convergence series) and handed to
 //! [`lowdisc_experiment::run`], which does the work and writes the report
 //! folder; the progress it reports is printed on stderr unless `--quiet`.
+//! `experiment plan|unit|merge|status` (the same run cut into units) are in
+//! [`crate::experiment_units`].
 
 use std::path::PathBuf;
 
@@ -14,6 +16,7 @@ use lowdisc::catalog::SamplerConfig;
 use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig};
 use lowdisc_render::preset::ScenePreset;
 
+use crate::experiment_units::Action;
 use crate::parse;
 use crate::progress::Reporter;
 
@@ -223,6 +226,41 @@ pub struct Experiment {
     config: ExperimentConfig,
     /// No progress, estimate or summary on stderr.
     quiet: bool,
+}
+
+impl Experiment {
+    /// The experiment's settings.
+    pub fn config(&self) -> &ExperimentConfig {
+        &self.config
+    }
+
+    /// Whether `--quiet` was given.
+    pub fn quiet(&self) -> bool {
+        self.quiet
+    }
+}
+
+/// `experiment`: the one-machine run, or one of the subcommands of a run
+/// cut into units ([`crate::experiment_units`]).
+#[derive(Debug, Args)]
+#[command(args_conflicts_with_subcommands = true)]
+pub struct ExperimentCommand {
+    /// A subcommand of the run cut into units.
+    #[command(subcommand)]
+    action: Option<Action>,
+    /// The one-machine run's arguments.
+    #[command(flatten)]
+    args: ExperimentArgs,
+}
+
+impl ExperimentCommand {
+    /// Runs the one-machine experiment or the subcommand.
+    pub fn run(self) -> Result<()> {
+        match self.action {
+            Some(action) => crate::experiment_units::run(action, std::io::stdout().lock()),
+            None => run(&self.args.into_config()?),
+        }
+    }
 }
 
 /// Runs the experiment, printing its progress and a summary unless `--quiet`.

@@ -14,8 +14,9 @@
 //! Modules, one per subcommand and a few shared ones:
 //! - `points`, `figure`, `discrepancy` (with `metric_rows`, `pointfile`),
 //!   `spectrum`, `claim` (with `claim_report`), `render_cmd` (with
-//!   `render_stats`), `experiment`: the subcommands; the experiment itself is
-//!   the library `lowdisc-experiment`;
+//!   `render_stats`), `experiment` (with `experiment_units`: plan, unit,
+//!   merge, status): the subcommands; the experiment itself is the library
+//!   `lowdisc-experiment`;
 //! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
 //! - `limits`: the default work and memory limits and their checks;
 //! - `output`: tabular output of points (text, CSV, u32, JSON);
@@ -27,6 +28,7 @@ mod claim;
 mod claim_report;
 mod discrepancy;
 mod experiment;
+mod experiment_units;
 mod figure;
 mod interrupt;
 mod limits;
@@ -77,7 +79,7 @@ enum Command {
     Render(render_cmd::RenderArgs),
     /// The paper's experiment: every sampler against a converged reference, with a report.
     #[command(long_about = experiment::LONG_ABOUT)]
-    Experiment(experiment::ExperimentArgs),
+    Experiment(Box<experiment::ExperimentCommand>),
 }
 
 /// Validates the subcommand's arguments and runs it.
@@ -89,7 +91,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         }
         Command::Figure(args) => figure::run(&args.into_config()?),
         Command::Render(args) => render_cmd::run(&args.into_config()?),
-        Command::Experiment(args) => experiment::run(&args.into_config()?),
+        Command::Experiment(command) => command.run(),
         Command::Discrepancy(args) => {
             let config = args.into_config()?;
             discrepancy::run(&config, io::stdout().lock())

@@ -58,7 +58,7 @@ pub struct Reporter {
 }
 
 /// `1.23 M` style: three significant digits and an SI prefix.
-fn si(value: f64) -> String {
+pub fn si(value: f64) -> String {
     let (v, prefix) = match value {
         v if v >= 1e9 => (v / 1e9, " G"),
         v if v >= 1e6 => (v / 1e6, " M"),
@@ -278,7 +278,7 @@ impl Progress for Reporter {
             duration(e.seconds),
             si(e.samples as f64),
             si(e.samples_per_second),
-            lowdisc_experiment::plan::CALIBRATION_SPP
+            lowdisc_experiment::estimate::CALIBRATION_SPP
         ));
     }
     fn begin(&self, name: &str, total: u64) {

@@ -60,9 +60,26 @@ pub struct ExperimentConfig {
 }
 
 impl ExperimentConfig {
-    /// Checks that every setting is in range; the messages name the
-    /// command-line options.
+    /// Checks that every setting is in range and that the scene and
+    /// environment map files exist; the messages name the command-line
+    /// options.
     pub fn validate(&self) -> Result<()> {
+        self.validate_ranges()?;
+        if let Some(e) = &self.envmap {
+            if !e.is_file() {
+                bail!("--envmap `{}` is not a file", e.display());
+            }
+        }
+        if let Some(s) = &self.scene {
+            if !s.is_file() {
+                bail!("scene `{}` is not a file", s.display());
+            }
+        }
+        Ok(())
+    }
+
+    /// Checks that every setting is in range (files aside).
+    pub fn validate_ranges(&self) -> Result<()> {
         if self.samplers.is_empty() {
             bail!("--samplers needs at least one sampler name");
         }
@@ -102,11 +119,6 @@ impl ExperimentConfig {
                 );
             }
         }
-        if let Some(e) = &self.envmap {
-            if !e.is_file() {
-                bail!("--envmap `{}` is not a file", e.display());
-            }
-        }
         if self.scene.is_some() && self.preset.is_some() {
             bail!("a scene file and --preset cannot be used together");
         }
@@ -122,11 +134,6 @@ impl ExperimentConfig {
                 "--blur-sigma must be in (0, {max_sigma}] pixels, got {}",
                 self.blur_sigma
             );
-        }
-        if let Some(s) = &self.scene {
-            if !s.is_file() {
-                bail!("scene `{}` is not a file", s.display());
-            }
         }
         Ok(())
     }

@@ -9,9 +9,16 @@
 //! Modules, in the order a run uses them:
 //! - [`config`]: the validated settings of one experiment;
 //! - [`scene`]: the built-in scene and its procedural sky;
-//! - [`plan`]: the samples a run will render and the estimate of its time;
-//! - [`reference`](mod@reference): the converged reference render, cached on disk;
-//! - [`run`](mod@run): the repeated renders of every sampler and their convergence series;
+//! - [`plan`]: the experiment as independent units (one render each) and
+//!   `plan.json`;
+//! - [`estimate`]: the estimate of a one-machine run's time;
+//! - [`reference`](mod@reference): the converged reference renders, cached on disk;
+//! - [`run`](mod@run): the one-machine run: every unit rendered in-process;
+//! - [`units`]: rendering one unit, its files, its lock;
+//! - [`assemble`](mod@assemble): the units' renders measured and collected
+//!   into results (one path for the one-machine and the planned run);
+//! - [`planned`]: the planned run in a folder: plan, and merge;
+//! - [`status`]: the progress of a planned run;
 //! - [`sweep`]: the threshold sweep of the paper's method;
 //! - [`metrics`]: the error metrics of one render and their summary over runs;
 //! - [`quality`]: the emitter mask, masked errors, blurred MSE and FLIP of a render;
@@ -65,11 +72,14 @@
 //! own noise adds at most about 1/8 to the last point's relMSE. Every file
 //! is written to a temporary file and renamed into place.
 
+pub mod assemble;
 pub mod comparison;
 pub mod config;
+pub mod estimate;
 pub mod figure;
 pub mod metrics;
 pub mod plan;
+pub mod planned;
 pub mod progress;
 pub mod quality;
 pub mod reference;
@@ -78,9 +88,12 @@ pub mod results;
 pub mod run;
 pub mod scene;
 pub mod stats;
+pub mod status;
 pub mod sweep;
+pub mod units;
 
+pub use assemble::assemble;
 pub use config::{DEFAULT_SAMPLERS, ExperimentConfig, REF_SAMPLER, REF_SEED};
-pub use plan::Estimate;
+pub use estimate::Estimate;
 pub use progress::{Progress, Silent};
 pub use run::{Outcome, run};

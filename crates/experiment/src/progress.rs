@@ -13,7 +13,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use lowdisc_render::render::{self, ProgressSink};
 
-use crate::plan::Estimate;
+use crate::estimate::Estimate;
 
 /// Receives a run's progress; every method does nothing by default.
 pub trait Progress: Sync {

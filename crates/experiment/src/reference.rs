@@ -1,43 +1,70 @@
-//! The converged reference render, cached on disk under a key of the
-//! scene's content and every setting that changes the image.
+//! The converged reference renders (the main one and the convergence
+//! series' own), cached on disk under a key of the scene's content and
+//! every setting that changes the image; a reference that is not cached
+//! is a unit of the plan ([`crate::plan`]).
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use lowdisc_image::RgbImage;
-use lowdisc_render::render::render;
-use lowdisc_render::scene::Scene;
 
+use crate::assemble::{Cursor, UnitSource};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::plan::{Plan, Target, Work};
 use crate::progress::{Progress, Stage, samples};
 use crate::results::ReferenceInfo;
-use crate::run::options;
 use crate::stats::{FNV_OFFSET, fnv1a};
 
-/// The reference of `scene` at its film's resolution (part of the cache
-/// key) with `spp` samples per pixel, from the cache when present.
-pub fn reference(
-    config: &ExperimentConfig,
-    scene: &Scene,
-    scene_hash: u64,
-    spp: u32,
+/// The resolution and spp of reference `target`.
+pub fn settings(config: &ExperimentConfig, target: Target) -> ([u32; 2], u32) {
+    match target {
+        Target::Main => (config.resolution, config.ref_spp),
+        Target::Convergence => (config.conv_res, config.conv_ref_spp),
+    }
+}
+
+/// Whether the main and the convergence reference are in the cache (and
+/// readable) for the scene whose content hashes to `scene_hash`.
+pub fn cached_references(config: &ExperimentConfig, scene_hash: u64) -> [bool; 2] {
+    [Target::Main, Target::Convergence].map(|target| {
+        let (resolution, spp) = settings(config, target);
+        let file = cache_file(config, resolution, scene_hash, spp);
+        file.is_file() && lowdisc_image::read_image(&file).is_ok()
+    })
+}
+
+/// Reference `target` of the plan: read from the cache when the plan says
+/// it is cached, else rendered by its unit (the next in `cursor`) and
+/// written to the cache.
+pub(crate) fn reference(
+    plan: &Plan,
+    target: Target,
+    cursor: &mut Cursor,
+    source: &mut dyn UnitSource,
     observer: &dyn Progress,
 ) -> Result<(RgbImage, ReferenceInfo)> {
-    let resolution = scene.film().params.resolution;
-    let file = cache_file(config, resolution, scene_hash, spp);
+    let config = &plan.config;
+    let (resolution, spp) = settings(config, target);
+    let file = cache_file(config, resolution, plan.scene_hash, spp);
     let dir = cache_dir(&config.out);
-    if file.is_file() {
-        if let Ok(image) = lowdisc_image::read_image(&file) {
-            observer.note(&format!("reusing cached reference {}", file.display()));
-            return Ok((
-                image,
-                ReferenceInfo {
-                    file,
-                    cached: true,
-                    time_s: 0.0,
-                },
-            ));
-        }
+    let cached = match target {
+        Target::Main => plan.cached[0],
+        Target::Convergence => plan.cached[1],
+    };
+    if cached {
+        let image = lowdisc_image::read_image(&file).with_context(|| {
+            format!(
+                "the planned reference `{}` cannot be read; plan again",
+                file.display()
+            )
+        })?;
+        observer.note(&format!("reusing cached reference {}", file.display()));
+        let info = ReferenceInfo {
+            file,
+            cached: true,
+            time_s: 0.0,
+        };
+        return Ok((image, info));
     }
     let title = format!(
         "rendering reference: {}x{}, {} spp with {}",
@@ -47,20 +74,17 @@ pub fn reference(
         REF_SAMPLER.as_str()
     );
     let stage = Stage::begin(observer, &title, samples(resolution, spp));
-    let out = render(scene, &options(config, REF_SAMPLER, REF_SEED, spp), &stage)?;
-    stage.finished_render(out.stats.samples);
+    let out = source.output(cursor.next(Work::Reference { target })?, &stage)?;
     stage.end();
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;
     lowdisc_image::write_pfm(&file, &out.image)?;
     observer.note(&format!("cached reference in {}", file.display()));
-    Ok((
-        out.image,
-        ReferenceInfo {
-            file,
-            cached: false,
-            time_s: out.stats.time.as_secs_f64(),
-        },
-    ))
+    let info = ReferenceInfo {
+        file,
+        cached: false,
+        time_s: out.render_time_s,
+    };
+    Ok((out.image, info))
 }
 
 /// The cache file of the reference at `resolution` with `spp` samples of

@@ -1,0 +1,348 @@
+//! `DIR/plan.json`: a [`Plan`] on disk, complete enough that the units and
+//! the merge need no other option.
+//!
+//! Schema (format `lowdisc-experiment-plan`, version 1):
+//!
+//! ```text
+//! { format: "lowdisc-experiment-plan", version: 1,
+//!   id: "16 hex digits: FNV-1a of every field below",
+//!   lowdisc_version: "0.1.0"   (units and merge refuse another version),
+//!   cwd: "/abs/folder"         (relative scene and envmap paths start here),
+//!   scene_hash: "16 hex digits" (the scene's content; units check it),
+//!   settings: { scene: path|null, preset: name|null, emitter_border,
+//!     blur_sigma, samplers: [names], spp, runs, resolution: [w, h],
+//!     ref_spp, conv_max, conv_res: [w, h], conv_ref_spp, envmap: path|null,
+//!     threshold, max_depth, threads: n|null, command: [args] },
+//!   cached: [main, convergence]  (references cached when planned: no units),
+//!   unit_count: N, samples: camera samples of all units,
+//!   units: [ { index, kind: "reference", target: "main"|"convergence" }
+//!          | { index, kind: "run", sampler, seed }
+//!          | { index, kind: "sweep", threshold, seed }
+//!          | { index, kind: "convergence", sampler, spp } ] }
+//! ```
+//!
+//! Each unit also lists its `resolution` and `samples` (a scheduler may
+//! balance by them; they are recomputed from the settings, not trusted).
+//! Floats are written in shortest round-trip form and read back exactly.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result, bail};
+use lowdisc::catalog::SamplerName;
+use lowdisc_render::preset::ScenePreset;
+use serde::{Deserialize, Serialize};
+
+use super::{Plan, Target, Unit, Work, units};
+use crate::config::ExperimentConfig;
+use crate::stats::{FNV_OFFSET, fnv1a};
+
+/// The `format` field of `plan.json`.
+pub const FORMAT: &str = "lowdisc-experiment-plan";
+/// The schema version this build writes and reads.
+pub const VERSION: u32 = 1;
+
+/// A plan with where it was made, as read from or written to `plan.json`.
+#[derive(Debug, Clone)]
+pub struct PlanFile {
+    /// The plan (its config's `out` is the plan's folder).
+    pub plan: Plan,
+    /// The folder relative paths of the settings start from.
+    pub cwd: PathBuf,
+    /// The plan's identity ([`Document::id`]).
+    pub id: String,
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+struct Settings {
+    scene: Option<PathBuf>,
+    preset: Option<String>,
+    emitter_border: u32,
+    blur_sigma: f64,
+    samplers: Vec<String>,
+    spp: u32,
+    runs: u32,
+    resolution: [u32; 2],
+    ref_spp: u32,
+    conv_max: u32,
+    conv_res: [u32; 2],
+    conv_ref_spp: u32,
+    envmap: Option<PathBuf>,
+    threshold: f64,
+    max_depth: u32,
+    threads: Option<usize>,
+    command: Vec<String>,
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+enum UnitDoc {
+    Reference { target: String },
+    Run { sampler: String, seed: u64 },
+    Sweep { threshold: f64, seed: u64 },
+    Convergence { sampler: String, spp: u32 },
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+struct UnitEntry {
+    index: usize,
+    #[serde(flatten)]
+    work: UnitDoc,
+    resolution: [u32; 2],
+    samples: u64,
+}
+
+/// The JSON document.
+#[derive(Debug, Serialize, Deserialize)]
+struct Document {
+    format: String,
+    version: u32,
+    id: String,
+    lowdisc_version: String,
+    cwd: PathBuf,
+    scene_hash: String,
+    settings: Settings,
+    cached: [bool; 2],
+    unit_count: usize,
+    samples: u64,
+    units: Vec<UnitEntry>,
+}
+
+impl Document {
+    /// The FNV-1a hash of every field but `id`, as 16 hex digits.
+    fn id(&self) -> Result<String> {
+        let body = serde_json::to_string(&(
+            &self.format,
+            self.version,
+            &self.lowdisc_version,
+            &self.cwd,
+            &self.scene_hash,
+            &self.settings,
+            self.cached,
+            &self.units,
+        ))?;
+        Ok(format!("{:016x}", fnv1a(FNV_OFFSET, body.as_bytes())))
+    }
+}
+
+fn sampler(name: &str) -> Result<SamplerName> {
+    name.parse()
+        .map_err(|_| anyhow::anyhow!("unknown sampler `{name}`"))
+}
+
+fn unit_doc(work: &Work) -> UnitDoc {
+    match *work {
+        Work::Reference { target } => UnitDoc::Reference {
+            target: match target {
+                Target::Main => "main",
+                Target::Convergence => "convergence",
+            }
+            .into(),
+        },
+        Work::Run { sampler, seed } => UnitDoc::Run {
+            sampler: sampler.as_str().into(),
+            seed,
+        },
+        Work::Sweep { threshold, seed } => UnitDoc::Sweep { threshold, seed },
+        Work::Convergence { sampler, spp } => UnitDoc::Convergence {
+            sampler: sampler.as_str().into(),
+            spp,
+        },
+    }
+}
+
+fn work_of(doc: &UnitDoc) -> Result<Work> {
+    Ok(match doc {
+        UnitDoc::Reference { target } => Work::Reference {
+            target: match target.as_str() {
+                "main" => Target::Main,
+                "convergence" => Target::Convergence,
+                other => bail!("unknown reference target `{other}`"),
+            },
+        },
+        UnitDoc::Run { sampler: s, seed } => Work::Run {
+            sampler: sampler(s)?,
+            seed: *seed,
+        },
+        UnitDoc::Sweep { threshold, seed } => Work::Sweep {
+            threshold: *threshold,
+            seed: *seed,
+        },
+        UnitDoc::Convergence { sampler: s, spp } => Work::Convergence {
+            sampler: sampler(s)?,
+            spp: *spp,
+        },
+    })
+}
+
+fn settings(c: &ExperimentConfig) -> Settings {
+    Settings {
+        scene: c.scene.clone(),
+        preset: c.preset.map(|p| p.name().to_string()),
+        emitter_border: c.emitter_border,
+        blur_sigma: c.blur_sigma,
+        samplers: c.samplers.iter().map(|s| s.as_str().to_string()).collect(),
+        spp: c.spp,
+        runs: c.runs,
+        resolution: c.resolution,
+        ref_spp: c.ref_spp,
+        conv_max: c.conv_max,
+        conv_res: c.conv_res,
+        conv_ref_spp: c.conv_ref_spp,
+        envmap: c.envmap.clone(),
+        threshold: c.threshold,
+        max_depth: c.max_depth,
+        threads: c.threads,
+        command: c.command.clone(),
+    }
+}
+
+fn config(s: Settings, out: &Path) -> Result<ExperimentConfig> {
+    let preset = match &s.preset {
+        Some(name) => {
+            Some(ScenePreset::from_name(name).with_context(|| format!("unknown preset `{name}`"))?)
+        }
+        None => None,
+    };
+    Ok(ExperimentConfig {
+        scene: s.scene,
+        preset,
+        emitter_border: s.emitter_border,
+        blur_sigma: s.blur_sigma,
+        samplers: s
+            .samplers
+            .iter()
+            .map(|n| sampler(n))
+            .collect::<Result<_>>()?,
+        spp: s.spp,
+        runs: s.runs,
+        resolution: s.resolution,
+        ref_spp: s.ref_spp,
+        conv_max: s.conv_max,
+        conv_res: s.conv_res,
+        conv_ref_spp: s.conv_ref_spp,
+        envmap: s.envmap,
+        threshold: s.threshold,
+        max_depth: s.max_depth,
+        threads: s.threads,
+        out: out.to_path_buf(),
+        command: s.command,
+    })
+}
+
+fn document(plan: &Plan, cwd: &Path) -> Result<Document> {
+    let c = &plan.config;
+    let mut doc = Document {
+        format: FORMAT.into(),
+        version: VERSION,
+        id: String::new(),
+        lowdisc_version: env!("CARGO_PKG_VERSION").into(),
+        cwd: cwd.to_path_buf(),
+        scene_hash: format!("{:016x}", plan.scene_hash),
+        settings: settings(c),
+        cached: plan.cached,
+        unit_count: plan.units.len(),
+        samples: plan.samples(),
+        units: plan
+            .units
+            .iter()
+            .map(|u| UnitEntry {
+                index: u.index,
+                work: unit_doc(&u.work),
+                resolution: u.resolution(c),
+                samples: u.samples(c),
+            })
+            .collect(),
+    };
+    doc.id = doc.id()?;
+    Ok(doc)
+}
+
+impl PlanFile {
+    /// The plan made in folder `cwd`, with its identity.
+    pub fn new(plan: Plan, cwd: PathBuf) -> Result<PlanFile> {
+        let id = document(&plan, &cwd)?.id;
+        Ok(PlanFile { plan, cwd, id })
+    }
+
+    /// The text of `plan.json`.
+    pub fn to_json(&self) -> Result<String> {
+        Ok(serde_json::to_string_pretty(&document(&self.plan, &self.cwd)?)? + "\n")
+    }
+
+    /// Parses the text of `DIR/plan.json` (`dir` becomes the config's
+    /// `out`); checks the format, version, identity and that the units are
+    /// exactly those of the settings.
+    pub fn parse(text: &str, dir: &Path) -> Result<PlanFile> {
+        let doc: Document = serde_json::from_str(text)?;
+        if doc.format != FORMAT || doc.version != VERSION {
+            bail!(
+                "not a version-{VERSION} experiment plan (format `{}`, version {})",
+                doc.format,
+                doc.version
+            );
+        }
+        if doc.lowdisc_version != env!("CARGO_PKG_VERSION") {
+            bail!(
+                "the plan was made by lowdisc {}, this is {}; plan again",
+                doc.lowdisc_version,
+                env!("CARGO_PKG_VERSION")
+            );
+        }
+        if doc.id()? != doc.id {
+            bail!("its id {} does not match its content (edited?)", doc.id);
+        }
+        let scene_hash = u64::from_str_radix(&doc.scene_hash, 16)
+            .with_context(|| format!("bad scene_hash `{}`", doc.scene_hash))?;
+        let listed = doc
+            .units
+            .iter()
+            .map(|u| work_of(&u.work))
+            .collect::<Result<Vec<_>>>()?;
+        let config = config(doc.settings, dir)?;
+        config.validate_ranges()?;
+        let plan = Plan::new(config, scene_hash, doc.cached);
+        let expected: Vec<Work> = units(&plan.config, plan.cached)
+            .iter()
+            .map(|u| u.work)
+            .collect();
+        let indices_ok = doc.units.iter().enumerate().all(|(i, u)| u.index == i);
+        if listed != expected || !indices_ok || doc.unit_count != plan.units.len() {
+            bail!("its units are not those of its settings");
+        }
+        Ok(PlanFile {
+            plan,
+            cwd: doc.cwd,
+            id: doc.id,
+        })
+    }
+
+    /// Reads `DIR/plan.json`; errors name the file.
+    pub fn read(dir: &Path) -> Result<PlanFile> {
+        let path = dir.join("plan.json");
+        let text = lowdisc_files::read_input(&path)
+            .map_err(anyhow::Error::from)
+            .and_then(|b| String::from_utf8(b).context("not UTF-8"))
+            .with_context(|| format!("cannot read the plan `{}`", path.display()))?;
+        PlanFile::parse(&text, dir).with_context(|| format!("bad plan `{}`", path.display()))
+    }
+
+    /// The config with relative scene and envmap paths made absolute from
+    /// [`PlanFile::cwd`], for loading the scene in any folder.
+    pub fn loading_config(&self) -> ExperimentConfig {
+        let mut c = self.plan.config.clone();
+        let absolute = |p: &mut Option<PathBuf>| {
+            if let Some(path) = p.as_mut().filter(|p| p.is_relative()) {
+                *path = self.cwd.join(&*path);
+            }
+        };
+        absolute(&mut c.scene);
+        absolute(&mut c.envmap);
+        c
+    }
+
+    /// The unit `unit` as it would appear in the plan: to check a unit
+    /// file against.
+    pub fn unit(&self, index: usize) -> Result<&Unit> {
+        self.plan.unit(index)
+    }
+}

@@ -1,0 +1,131 @@
+//! Tests of the plan's units and of `plan.json`.
+
+use std::path::Path;
+
+use lowdisc::catalog::SamplerName;
+
+use super::file::PlanFile;
+use super::*;
+
+fn config() -> ExperimentConfig {
+    ExperimentConfig {
+        scene: None,
+        samplers: vec![SamplerName::Sobol, SamplerName::Halton],
+        spp: 4,
+        runs: 3,
+        resolution: [10, 10],
+        ref_spp: 64,
+        conv_max: 8,
+        conv_res: [5, 5],
+        conv_ref_spp: 32,
+        envmap: None,
+        threshold: 0.3,
+        max_depth: 5,
+        threads: None,
+        out: "out".into(),
+        command: vec!["lowdisc".into(), "experiment".into()],
+        preset: None,
+        emitter_border: 3,
+        blur_sigma: 1.1,
+    }
+}
+
+#[test]
+fn the_units_count_every_stage_once() {
+    let c = config();
+    // Runs: 2 samplers x 3 runs x 400; sweep: 7 x 3 x 400; convergence:
+    // 2 x 25 x 15; references: 100 x 64 and 25 x 32.
+    let runs = 2 * 3 * 400 + 7 * 3 * 400 + 2 * 25 * 15;
+    assert_eq!(Plan::new(c.clone(), 0, [true, true]).samples(), runs);
+    assert_eq!(
+        Plan::new(c.clone(), 0, [false, true]).samples(),
+        runs + 6400
+    );
+    let all = Plan::new(c.clone(), 0, [false, false]);
+    assert_eq!(all.samples(), runs + 6400 + 800);
+    // 2 references, 6 runs, 21 sweep renders, 2 x 4 convergence points.
+    assert_eq!(all.units.len(), 2 + 6 + 21 + 8);
+    assert!(all.units.iter().enumerate().all(|(i, u)| u.index == i));
+    // One reference serves both when resolution and spp agree.
+    let mut same = c;
+    same.conv_res = same.resolution;
+    same.conv_ref_spp = same.ref_spp;
+    let runs_same = 2 * 3 * 400 + 7 * 3 * 400 + 2 * 100 * 15;
+    assert_eq!(
+        Plan::new(same, 0, [false, false]).samples(),
+        runs_same + 6400
+    );
+}
+
+#[test]
+fn the_units_come_in_the_order_of_the_one_machine_run() {
+    let plan = Plan::new(config(), 0, [false, false]);
+    let w: Vec<String> = plan.units.iter().map(|u| u.work.describe()).collect();
+    assert_eq!(w[0], "reference main");
+    assert_eq!(w[1], "run sobol seed 0");
+    assert_eq!(w[6], "run halton seed 2");
+    assert_eq!(w[7], "sweep threshold 0 seed 0");
+    assert_eq!(w[27], "sweep threshold 1 seed 2");
+    assert_eq!(w[28], "reference convergence");
+    assert_eq!(w[29], "convergence sobol 1 spp");
+    assert_eq!(w[36], "convergence halton 8 spp");
+    let sweep = plan.units[10].options(&plan.config);
+    assert_eq!(sweep.sampler.name, SamplerName::PaperRepro);
+    assert_eq!(sweep.sampler.threshold, 0.1);
+    assert_eq!(plan.units[28].resolution(&plan.config), [5, 5]);
+    assert_eq!(plan.units[28].options(&plan.config).sampler.spp, 32);
+}
+
+#[test]
+fn an_index_out_of_range_names_the_range() {
+    let plan = Plan::new(config(), 0, [true, true]);
+    let err = plan.unit(35).unwrap_err().to_string();
+    assert_eq!(
+        err,
+        "unit index 35 is out of range: the plan has 35 units (0 to 34)"
+    );
+}
+
+#[test]
+fn plan_json_reads_back_to_the_same_plan_and_id() {
+    let plan = Plan::new(config(), 0xfeed_beef_0123_4567, [false, true]);
+    let file = PlanFile::new(plan, "/work".into()).unwrap();
+    let text = file.to_json().unwrap();
+    let back = PlanFile::parse(&text, Path::new("elsewhere")).unwrap();
+    assert_eq!(back.id, file.id);
+    assert_eq!(back.plan.units, file.plan.units);
+    assert_eq!(back.plan.scene_hash, 0xfeed_beef_0123_4567);
+    assert_eq!(back.plan.config.threshold, 0.3);
+    assert_eq!(back.plan.config.blur_sigma, 1.1);
+    assert_eq!(back.plan.config.out, Path::new("elsewhere"));
+    assert_eq!(back.to_json().unwrap(), text);
+}
+
+#[test]
+fn an_edited_or_foreign_plan_is_refused() {
+    let file = PlanFile::new(Plan::new(config(), 1, [true, true]), "/w".into()).unwrap();
+    let text = file.to_json().unwrap();
+    let edited = text.replace("\"spp\": 4", "\"spp\": 8");
+    assert_ne!(edited, text);
+    let err = PlanFile::parse(&edited, Path::new("d")).unwrap_err();
+    assert!(
+        err.to_string().contains("does not match its content"),
+        "{err}"
+    );
+    let other = text.replace(super::file::FORMAT, "something-else");
+    let err = PlanFile::parse(&other, Path::new("d")).unwrap_err();
+    assert!(err.to_string().contains("not a version-1"), "{err}");
+}
+
+#[test]
+fn relative_paths_start_at_the_planning_folder() {
+    let mut c = config();
+    c.scene = Some("scenes/a.pbrt".into());
+    c.envmap = Some("/abs/sky.exr".into());
+    let file = PlanFile::new(Plan::new(c, 1, [true, true]), "/work/x".into()).unwrap();
+    let loading = file.loading_config();
+    assert_eq!(loading.scene.unwrap(), Path::new("/work/x/scenes/a.pbrt"));
+    assert_eq!(loading.envmap.unwrap(), Path::new("/abs/sky.exr"));
+    // The report keeps the path as given.
+    assert_eq!(file.plan.config.scene.unwrap(), Path::new("scenes/a.pbrt"));
+}

@@ -1,0 +1,184 @@
+//! Running the units of a plan: [`render_unit`] renders one (the same
+//! function for the one-machine run, through [`InProcess`], and for
+//! `lowdisc experiment unit`, through [`run_unit`]); [`FromFiles`] hands the
+//! finished units' images to the merge.
+//!
+//! [`run_unit`] is idempotent and safe to rerun: a unit whose record and
+//! image are in place is skipped; otherwise it takes the unit's lock
+//! ([`lock`]), renders, writes the image and then the record ([`store`]),
+//! records a failure in `I.failed`, and removes the lock in every case.
+
+pub mod lock;
+pub mod store;
+
+use std::path::Path;
+use std::time::Instant;
+
+use anyhow::{Context, Result, bail};
+use lowdisc_render::render::render;
+use lowdisc_render::scene::Scene;
+
+use crate::assemble::{UnitOutput, UnitSource};
+use crate::config::ExperimentConfig;
+use crate::plan::Unit;
+use crate::plan::file::PlanFile;
+use crate::progress::{Progress, Stage};
+use crate::run::load;
+use lock::{Lock, host_name, unix_now};
+use store::{Record, Store};
+
+/// Renders `unit` of the experiment `config` with `scene`, first set to
+/// the unit's resolution, reporting its samples to `stage`.
+pub fn render_unit(
+    config: &ExperimentConfig,
+    scene: &mut Scene,
+    unit: &Unit,
+    stage: &Stage,
+) -> Result<UnitOutput> {
+    let resolution = unit.resolution(config);
+    if scene.film().params.resolution != resolution {
+        scene.set_resolution(resolution)?;
+    }
+    let out = render(scene, &unit.options(config), stage)?;
+    stage.finished_render(out.stats.samples);
+    Ok(UnitOutput {
+        image: out.image,
+        render_time_s: out.stats.time.as_secs_f64(),
+    })
+}
+
+/// The units rendered in this process, one after the other, on one scene.
+pub struct InProcess<'a> {
+    /// The experiment.
+    pub config: &'a ExperimentConfig,
+    /// Its scene, loaded at the experiment's resolution.
+    pub scene: &'a mut Scene,
+}
+
+impl UnitSource for InProcess<'_> {
+    fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput> {
+        render_unit(self.config, self.scene, unit, stage)
+    }
+}
+
+/// The finished units of a plan folder.
+pub struct FromFiles<'a> {
+    /// The plan.
+    pub plan: &'a PlanFile,
+    /// Its units' files.
+    pub store: &'a Store,
+}
+
+impl UnitSource for FromFiles<'_> {
+    fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput> {
+        let record = self
+            .store
+            .record(unit.index, &self.plan.id)?
+            .with_context(|| format!("unit {} is not done", unit.index))?;
+        let image = self.store.image(&record)?;
+        let [w, h] = unit.resolution(&self.plan.plan.config);
+        if (image.width(), image.height()) != (w as usize, h as usize) {
+            bail!(
+                "the image of unit {} is {}x{}, the plan's is {w}x{h}",
+                unit.index,
+                image.width(),
+                image.height()
+            );
+        }
+        stage.finished_render(record.samples);
+        Ok(UnitOutput {
+            image,
+            render_time_s: record.render_time_s,
+        })
+    }
+}
+
+/// What [`run_unit`] did.
+#[derive(Debug, Clone)]
+pub enum UnitRun {
+    /// It rendered the unit.
+    Rendered(Record),
+    /// The unit was already done.
+    AlreadyDone(Record),
+}
+
+/// Runs unit `index` of the plan in `dir` (see the module doc); `threads`
+/// replaces the plan's thread count (the images do not depend on it).
+pub fn run_unit(
+    dir: &Path,
+    index: usize,
+    threads: Option<usize>,
+    observer: &dyn Progress,
+) -> Result<UnitRun> {
+    let plan = PlanFile::read(dir)?;
+    let unit = *plan.unit(index)?;
+    let store = Store::new(dir, plan.plan.units.len());
+    match store.record(index, &plan.id) {
+        Ok(Some(record)) => match store.image(&record) {
+            Ok(_) => return Ok(UnitRun::AlreadyDone(record)),
+            Err(e) => observer.note(&format!("{e:#}: rendering it again")),
+        },
+        Ok(None) => {}
+        Err(e) => observer.note(&format!("{e:#}: rendering it again")),
+    }
+    store.create()?;
+    let lock = Lock::take(&store.file(index, "lock"))?;
+    let result = render_and_write(&plan, &store, &unit, threads, observer);
+    let recorded = match &result {
+        Ok(_) => store.clear_failure(index),
+        Err(e) => store.write_failure(index, &format!("{e:#}")),
+    };
+    let released = lock.release();
+    let record = result?;
+    recorded?;
+    released?;
+    Ok(UnitRun::Rendered(record))
+}
+
+/// Loads the plan's scene, checks it is the planned one, renders `unit`
+/// and writes its image and record.
+fn render_and_write(
+    plan: &PlanFile,
+    store: &Store,
+    unit: &Unit,
+    threads: Option<usize>,
+    observer: &dyn Progress,
+) -> Result<Record> {
+    let start = Instant::now();
+    let mut config = plan.loading_config();
+    config.threads = threads.or(config.threads);
+    config.validate()?;
+    let (mut scene, hash) = load(&config, observer)?;
+    check_scene(plan, hash)?;
+    let title = format!("unit {}: {}", unit.index, unit.work.describe());
+    let stage = Stage::begin(observer, &title, unit.samples(&config));
+    let out = render_unit(&config, &mut scene, unit, &stage)?;
+    stage.end();
+    let record = Record {
+        format: store::FORMAT.into(),
+        version: 1,
+        plan_id: plan.id.clone(),
+        index: unit.index,
+        work: unit.work.describe(),
+        image: String::new(),
+        image_fnv1a: String::new(),
+        samples: unit.samples(&config),
+        render_time_s: out.render_time_s,
+        wall_time_s: start.elapsed().as_secs_f64(),
+        host: host_name(),
+        pid: std::process::id(),
+        finished_unix_s: unix_now(),
+    };
+    store.write(record, &out.image)
+}
+
+/// Refuses a scene whose content hash is not the plan's.
+pub fn check_scene(plan: &PlanFile, hash: u64) -> Result<()> {
+    if hash != plan.plan.scene_hash {
+        bail!(
+            "the scene (or environment map) changed since the plan was made (content hash {hash:016x}, planned {:016x}); plan again",
+            plan.plan.scene_hash
+        );
+    }
+    Ok(())
+}
