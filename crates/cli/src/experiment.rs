@@ -60,7 +60,12 @@ visible emitters (and the sky) masked with a border of --emitter-border\n\
 pixels, by the MSE of its error blurred by a Gaussian of --blur-sigma pixels,\n\
 and by NVIDIA's FLIP. The report gives mean ± standard error, 95 % intervals\n\
 (Student t) and the ratio to sobol from paired seeds with its interval, and\n\
-says \"not distinguishable\" where the interval contains 1.";
+says \"not distinguishable\" where the interval contains 1.\n\
+\n\
+The same run cut into independent units for a cluster: `experiment plan\n\
+[these options] --out DIR`, then `experiment unit DIR --index I` for every\n\
+unit (any order, any machine), `experiment status DIR`, `experiment merge\n\
+DIR` (the same report, results.json and images).";
 
 /// The arguments of `experiment`.
 #[derive(Debug, Args)]

@@ -329,6 +329,7 @@ fn prepare(
         },
         threads: config.threads,
         tile_size: 16,
+        ..RenderOptions::default()
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;

@@ -26,8 +26,9 @@ const SETTINGS: [&str; 11] = [
     "--conv-ref-spp",
     "32",
 ];
-/// 1 + 2 x 2 runs + 7 x 2 sweep renders + 1 + 2 x 3 convergence points.
-const UNITS: usize = 26;
+/// 2 bands of the reference + 2 x 2 runs + 7 x 2 sweep renders + 1 band of
+/// the convergence reference + 2 x 3 convergence points.
+const UNITS: usize = 27;
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()
@@ -116,7 +117,7 @@ fn planned_and_merged_equals_the_one_machine_run() {
 
     let printed = plan(&planned, &[]);
     assert!(
-        printed.contains(&format!("{UNITS} units (indices 0 to 25)")),
+        printed.contains(&format!("{UNITS} units (indices 0 to 26)")),
         "{printed}"
     );
     // The same plan again is kept; a different one is refused.
@@ -133,7 +134,7 @@ fn planned_and_merged_equals_the_one_machine_run() {
     ok(&unit(&planned, 0));
     let err = error_of(&merge(&planned));
     assert!(
-        err.contains("25 of the plan's 26 units are not done (units 1, 2,"),
+        err.contains("26 of the plan's 27 units are not done (units 1, 2,"),
         "{err}"
     );
     // In reverse order: any order gives the same result.
@@ -184,43 +185,43 @@ fn units_are_idempotent_and_survive_failures() {
     // Index out of range.
     let err = error_of(&unit(&out, UNITS));
     assert!(
-        err.contains("unit index 26 is out of range: the plan has 26 units (0 to 25)"),
+        err.contains("unit index 27 is out of range: the plan has 27 units (0 to 26)"),
         "{err}"
     );
 
     // A second run of a done unit changes nothing.
-    let first = ok(&unit(&out, 2));
+    let first = ok(&unit(&out, 3));
     assert!(
-        first.contains("unit 2 (run sobol seed 1): done in"),
+        first.contains("unit 3 (run sobol seed 1): done in"),
         "{first}"
     );
-    let record = std::fs::read(unit_file(&out, 2, "json")).unwrap();
-    let again = ok(&unit(&out, 2));
+    let record = std::fs::read(unit_file(&out, 3, "json")).unwrap();
+    let again = ok(&unit(&out, 3));
     assert!(again.contains("already done"), "{again}");
-    assert_eq!(std::fs::read(unit_file(&out, 2, "json")).unwrap(), record);
+    assert_eq!(std::fs::read(unit_file(&out, 3, "json")).unwrap(), record);
 
     // The sky changes: the unit fails, says why, keeps no lock.
     let bright = lowdisc_image::RgbImage::filled(8, 4, [0.7; 3]).unwrap();
     lowdisc_image::write_pfm(&sky, &bright).unwrap();
-    let err = error_of(&unit(&out, 3));
+    let err = error_of(&unit(&out, 4));
     assert!(err.contains("changed since the plan was made"), "{err}");
-    assert!(unit_file(&out, 3, "failed").is_file());
-    assert!(!unit_file(&out, 3, "lock").exists());
-    assert!(!unit_file(&out, 3, "json").exists());
+    assert!(unit_file(&out, 4, "failed").is_file());
+    assert!(!unit_file(&out, 4, "lock").exists());
+    assert!(!unit_file(&out, 4, "json").exists());
     let st = status(&out);
     assert!(
-        st.contains("1 done, 0 running, 0 stale, 1 failed, 24 pending"),
+        st.contains("1 done, 0 running, 0 stale, 1 failed, 25 pending"),
         "{st}"
     );
     assert!(
-        st.contains("failed: unit 3 (run paper-repro seed 0): the scene"),
+        st.contains("failed: unit 4 (run paper-repro seed 0): the scene"),
         "{st}"
     );
     assert!(st.contains("ETA: "), "{st}");
     // Restored, the rerun succeeds and clears the failure.
     lowdisc_image::write_pfm(&sky, &grey).unwrap();
-    ok(&unit(&out, 3));
-    assert!(!unit_file(&out, 3, "failed").exists());
+    ok(&unit(&out, 4));
+    assert!(!unit_file(&out, 4, "failed").exists());
 
     // A live lock (this test's process) is running and refused; a dead
     // process's lock is stale and taken over.
@@ -230,18 +231,18 @@ fn units_are_idempotent_and_survive_failures() {
             "{{\"pid\":{pid},\"host\":\"{}\",\"start_unix_s\":0}}",
             host.trim()
         );
-        std::fs::write(unit_file(&out, 4, "lock"), text).unwrap();
+        std::fs::write(unit_file(&out, 5, "lock"), text).unwrap();
     };
     lock(std::process::id());
     let st = status(&out);
     assert!(
         st.contains(&format!(
-            "running: unit 4 (run paper-repro seed 1): pid {}",
+            "running: unit 5 (run paper-repro seed 1): pid {}",
             std::process::id()
         )),
         "{st}"
     );
-    let err = error_of(&unit(&out, 4));
+    let err = error_of(&unit(&out, 5));
     assert!(err.contains("is being run by pid"), "{err}");
     let mut child = std::process::Command::new("true").spawn().unwrap();
     let dead = child.id();
@@ -250,12 +251,12 @@ fn units_are_idempotent_and_survive_failures() {
     let st = status(&out);
     assert!(
         st.contains(&format!(
-            "stale: unit 4 (run paper-repro seed 1): pid {dead} on"
+            "stale: unit 5 (run paper-repro seed 1): pid {dead} on"
         )),
         "{st}"
     );
-    ok(&unit(&out, 4));
-    assert!(!unit_file(&out, 4, "lock").exists());
+    ok(&unit(&out, 5));
+    assert!(!unit_file(&out, 5, "lock").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -291,7 +292,7 @@ fn the_merge_refuses_foreign_and_broken_units() {
     std::fs::remove_file(unit_file(&a, 7, "json")).unwrap();
     let err = error_of(&merge(&a));
     assert!(
-        err.contains("1 of the plan's 26 units are not done (units 7)"),
+        err.contains("1 of the plan's 27 units are not done (units 7)"),
         "{err}"
     );
     ok(&unit(&a, 7));

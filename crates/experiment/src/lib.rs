@@ -71,6 +71,13 @@
 //! series can reach 1024 spp within the default run's time; the reference's
 //! own noise adds at most about 1/8 to the last point's relMSE. Every file
 //! is written to a temporary file and renamed into place.
+//!
+//! The same run can be cut into independent units ([`plan`]) that any
+//! scheduler runs: [`planned::make_plan`] writes `DIR/plan.json`,
+//! [`units::run_unit`] runs one unit into `DIR/units/`, [`status`] reports
+//! their progress and [`planned::merge`] writes the report of the
+//! one-machine run, through the same [`assemble()`] (its `wall_time_s` is
+//! the sum of the units' wall times and the merge's own).
 
 pub mod assemble;
 pub mod comparison;

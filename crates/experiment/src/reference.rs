@@ -5,37 +5,29 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use lowdisc_image::RgbImage;
 
 use crate::assemble::{Cursor, UnitSource};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
-use crate::plan::{Plan, Target, Work};
+use crate::plan::{Plan, Target, Work, reference_parts, reference_settings};
 use crate::progress::{Progress, Stage, samples};
 use crate::results::ReferenceInfo;
 use crate::stats::{FNV_OFFSET, fnv1a};
-
-/// The resolution and spp of reference `target`.
-pub fn settings(config: &ExperimentConfig, target: Target) -> ([u32; 2], u32) {
-    match target {
-        Target::Main => (config.resolution, config.ref_spp),
-        Target::Convergence => (config.conv_res, config.conv_ref_spp),
-    }
-}
 
 /// Whether the main and the convergence reference are in the cache (and
 /// readable) for the scene whose content hashes to `scene_hash`.
 pub fn cached_references(config: &ExperimentConfig, scene_hash: u64) -> [bool; 2] {
     [Target::Main, Target::Convergence].map(|target| {
-        let (resolution, spp) = settings(config, target);
+        let (resolution, spp) = reference_settings(config, target);
         let file = cache_file(config, resolution, scene_hash, spp);
         file.is_file() && lowdisc_image::read_image(&file).is_ok()
     })
 }
 
 /// Reference `target` of the plan: read from the cache when the plan says
-/// it is cached, else rendered by its unit (the next in `cursor`) and
-/// written to the cache.
+/// it is cached, else stacked from its bands (the next units of `cursor`),
+/// whose render times add up, and written to the cache.
 pub(crate) fn reference(
     plan: &Plan,
     target: Target,
@@ -44,7 +36,7 @@ pub(crate) fn reference(
     observer: &dyn Progress,
 ) -> Result<(RgbImage, ReferenceInfo)> {
     let config = &plan.config;
-    let (resolution, spp) = settings(config, target);
+    let (resolution, spp) = reference_settings(config, target);
     let file = cache_file(config, resolution, plan.scene_hash, spp);
     let dir = cache_dir(&config.out);
     let cached = match target {
@@ -74,17 +66,38 @@ pub(crate) fn reference(
         REF_SAMPLER.as_str()
     );
     let stage = Stage::begin(observer, &title, samples(resolution, spp));
-    let out = source.output(cursor.next(Work::Reference { target })?, &stage)?;
+    // The bands, from the top, stacked.
+    let parts = reference_parts(config, target);
+    let (mut width, mut pixels, mut time_s) = (0, Vec::new(), 0.0);
+    for part in 0..parts {
+        let unit = cursor.next(Work::Reference {
+            target,
+            part,
+            parts,
+        })?;
+        let out = source.output(unit, &stage)?;
+        if part > 0 && out.image.width() != width {
+            bail!(
+                "the bands of the reference differ in width ({width} and {} pixels)",
+                out.image.width()
+            );
+        }
+        width = out.image.width();
+        pixels.extend_from_slice(out.image.pixels());
+        time_s += out.render_time_s;
+    }
     stage.end();
+    let height = pixels.len() / width.max(1);
+    let image = RgbImage::from_pixels(width, height, pixels)?;
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;
-    lowdisc_image::write_pfm(&file, &out.image)?;
+    lowdisc_image::write_pfm(&file, &image)?;
     observer.note(&format!("cached reference in {}", file.display()));
     let info = ReferenceInfo {
         file,
         cached: false,
-        time_s: out.render_time_s,
+        time_s,
     };
-    Ok((out.image, info))
+    Ok((image, info))
 }
 
 /// The cache file of the reference at `resolution` with `spp` samples of

@@ -15,7 +15,8 @@
 //!     threshold, max_depth, threads: n|null, command: [args] },
 //!   cached: [main, convergence]  (references cached when planned: no units),
 //!   unit_count: N, samples: camera samples of all units,
-//!   units: [ { index, kind: "reference", target: "main"|"convergence" }
+//!   units: [ { index, kind: "reference", target: "main"|"convergence",
+//!              part, parts }   (band `part` of `parts` of rows of tiles)
 //!          | { index, kind: "run", sampler, seed }
 //!          | { index, kind: "sweep", threshold, seed }
 //!          | { index, kind: "convergence", sampler, spp } ] }
@@ -76,10 +77,23 @@ struct Settings {
 #[derive(Debug, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 enum UnitDoc {
-    Reference { target: String },
-    Run { sampler: String, seed: u64 },
-    Sweep { threshold: f64, seed: u64 },
-    Convergence { sampler: String, spp: u32 },
+    Reference {
+        target: String,
+        part: u32,
+        parts: u32,
+    },
+    Run {
+        sampler: String,
+        seed: u64,
+    },
+    Sweep {
+        threshold: f64,
+        seed: u64,
+    },
+    Convergence {
+        sampler: String,
+        spp: u32,
+    },
 }
 
 #[derive(Debug, Serialize, Deserialize)]
@@ -131,12 +145,18 @@ fn sampler(name: &str) -> Result<SamplerName> {
 
 fn unit_doc(work: &Work) -> UnitDoc {
     match *work {
-        Work::Reference { target } => UnitDoc::Reference {
+        Work::Reference {
+            target,
+            part,
+            parts,
+        } => UnitDoc::Reference {
             target: match target {
                 Target::Main => "main",
                 Target::Convergence => "convergence",
             }
             .into(),
+            part,
+            parts,
         },
         Work::Run { sampler, seed } => UnitDoc::Run {
             sampler: sampler.as_str().into(),
@@ -152,12 +172,18 @@ fn unit_doc(work: &Work) -> UnitDoc {
 
 fn work_of(doc: &UnitDoc) -> Result<Work> {
     Ok(match doc {
-        UnitDoc::Reference { target } => Work::Reference {
+        UnitDoc::Reference {
+            target,
+            part,
+            parts,
+        } => Work::Reference {
             target: match target.as_str() {
                 "main" => Target::Main,
                 "convergence" => Target::Convergence,
                 other => bail!("unknown reference target `{other}`"),
             },
+            part: *part,
+            parts: *parts,
         },
         UnitDoc::Run { sampler: s, seed } => Work::Run {
             sampler: sampler(s)?,

@@ -4,8 +4,8 @@
 //! them in any order and on any machine, and [`crate::assemble`] can turn
 //! their images into the same report.
 //!
-//! A unit is one render ([`Work`]): one part of a reference that is not
-//! cached, one run (sampler x seed; never split in samples per pixel, since
+//! A unit is one render ([`Work`]): one band of rows of a reference that
+//! is not cached ([`reference_parts`]), one run (sampler x seed; never split in samples per pixel, since
 //! averaging seeds would change the estimator being measured), one render of
 //! the threshold sweep (threshold x seed), or one point of a convergence
 //! series (sampler x spp). Units need nothing from each other: the metrics
@@ -40,10 +40,14 @@ pub enum Target {
 /// The render of one unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Work {
-    /// A reference render.
+    /// One band of rows of a reference render ([`band_rows`]).
     Reference {
         /// Which reference.
         target: Target,
+        /// The band, `0..parts`, from the top.
+        part: u32,
+        /// The number of bands of this reference ([`reference_parts`]).
+        parts: u32,
     },
     /// One run of a compared sampler.
     Run {
@@ -73,10 +77,17 @@ impl Work {
     /// `sweep threshold 0.5 seed 1`, `convergence sobol 64 spp`.
     pub fn describe(&self) -> String {
         match *self {
-            Work::Reference { target } => match target {
-                Target::Main => "reference main".into(),
-                Target::Convergence => "reference convergence".into(),
-            },
+            Work::Reference {
+                target,
+                part,
+                parts,
+            } => {
+                let name = match target {
+                    Target::Main => "main",
+                    Target::Convergence => "convergence",
+                };
+                format!("reference {name} part {} of {parts}", part + 1)
+            }
             Work::Run { sampler, seed } => format!("run {} seed {seed}", sampler.as_str()),
             Work::Sweep { threshold, seed } => format!("sweep threshold {threshold} seed {seed}"),
             Work::Convergence { sampler, spp } => {
@@ -101,6 +112,7 @@ impl Unit {
         match self.work {
             Work::Reference {
                 target: Target::Convergence,
+                ..
             }
             | Work::Convergence { .. } => config.conv_res,
             _ => config.resolution,
@@ -110,11 +122,8 @@ impl Unit {
     /// The render options of its render.
     pub fn options(&self, config: &ExperimentConfig) -> RenderOptions {
         match self.work {
-            Work::Reference { target } => {
-                let spp = match target {
-                    Target::Main => config.ref_spp,
-                    Target::Convergence => config.conv_ref_spp,
-                };
+            Work::Reference { target, .. } => {
+                let spp = reference_settings(config, target).1;
                 options(config, REF_SAMPLER, REF_SEED, spp)
             }
             Work::Run { sampler, seed } => options(config, sampler, seed, config.spp),
@@ -127,10 +136,57 @@ impl Unit {
         }
     }
 
-    /// The camera samples of its render.
+    /// The camera samples of its render (for a reference band of a scene
+    /// with a crop window, an upper bound).
     pub fn samples(&self, config: &ExperimentConfig) -> u64 {
-        samples(self.resolution(config), self.options(config).sampler.spp)
+        let [w, h] = self.resolution(config);
+        let rows = match self.work {
+            Work::Reference { part, parts, .. } => {
+                let [y0, y1] = band_rows(h, part, parts);
+                y1 - y0
+            }
+            _ => h,
+        };
+        samples([w, rows], self.options(config).sampler.spp)
     }
+}
+
+/// The resolution and spp of reference `target`.
+pub fn reference_settings(config: &ExperimentConfig, target: Target) -> ([u32; 2], u32) {
+    match target {
+        Target::Main => (config.resolution, config.ref_spp),
+        Target::Convergence => (config.conv_res, config.conv_ref_spp),
+    }
+}
+
+/// The rows of a render's tiles ([`crate::run::options`]' tile size): the
+/// bands of a reference are whole rows of tiles.
+pub const BAND_ROWS: u32 = 16;
+
+/// The number of bands reference `target` is cut into: enough that no band
+/// has more samples than the largest other unit (a run, or the last point of
+/// a convergence series), at most one band per row of tiles. The bands'
+/// pixels are those of the whole render, bit for bit (the tile grid and
+/// the tiles' sampler streams are the whole film's); the bands are not
+/// split in samples per pixel, whose sums would merge only up to rounding.
+pub fn reference_parts(config: &ExperimentConfig, target: Target) -> u32 {
+    let ([w, h], spp) = reference_settings(config, target);
+    let largest = samples(config.resolution, config.spp)
+        .max(samples(config.conv_res, config.conv_max))
+        .max(1);
+    let wanted = samples([w, h], spp).div_ceil(largest);
+    let tile_rows = h.div_ceil(BAND_ROWS);
+    wanted.clamp(1, u64::from(tile_rows.max(1))) as u32
+}
+
+/// The rows `[y0, y1)` of band `part` of `parts` of an image `height` rows
+/// high (counted from the top of the film's pixel bounds): consecutive
+/// whole rows of tiles, as equal in number as they can be.
+pub fn band_rows(height: u32, part: u32, parts: u32) -> [u32; 2] {
+    let tile_rows = u64::from(height.div_ceil(BAND_ROWS));
+    let parts = u64::from(parts.max(1));
+    let edge = |p: u64| ((p * tile_rows / parts) as u32 * BAND_ROWS).min(height);
+    [edge(u64::from(part)), edge(u64::from(part) + 1)]
 }
 
 /// Whether the convergence series use the main reference (same resolution
@@ -145,10 +201,18 @@ pub fn shares_reference(config: &ExperimentConfig) -> bool {
 /// `cached[1]`, and each sampler's convergence series.
 pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
     let mut work = Vec::new();
+    let reference = |work: &mut Vec<Work>, target| {
+        let parts = reference_parts(config, target);
+        for part in 0..parts {
+            work.push(Work::Reference {
+                target,
+                part,
+                parts,
+            });
+        }
+    };
     if !cached[0] {
-        work.push(Work::Reference {
-            target: Target::Main,
-        });
+        reference(&mut work, Target::Main);
     }
     for &sampler in &config.samplers {
         for seed in 0..u64::from(config.runs) {
@@ -161,9 +225,7 @@ pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
         }
     }
     if !shares_reference(config) && !cached[1] {
-        work.push(Work::Reference {
-            target: Target::Convergence,
-        });
+        reference(&mut work, Target::Convergence);
     }
     for &sampler in &config.samplers {
         let mut spp = 1;

@@ -61,12 +61,12 @@ fn the_units_count_every_stage_once() {
 fn the_units_come_in_the_order_of_the_one_machine_run() {
     let plan = Plan::new(config(), 0, [false, false]);
     let w: Vec<String> = plan.units.iter().map(|u| u.work.describe()).collect();
-    assert_eq!(w[0], "reference main");
+    assert_eq!(w[0], "reference main part 1 of 1");
     assert_eq!(w[1], "run sobol seed 0");
     assert_eq!(w[6], "run halton seed 2");
     assert_eq!(w[7], "sweep threshold 0 seed 0");
     assert_eq!(w[27], "sweep threshold 1 seed 2");
-    assert_eq!(w[28], "reference convergence");
+    assert_eq!(w[28], "reference convergence part 1 of 1");
     assert_eq!(w[29], "convergence sobol 1 spp");
     assert_eq!(w[36], "convergence halton 8 spp");
     let sweep = plan.units[10].options(&plan.config);
@@ -128,4 +128,37 @@ fn relative_paths_start_at_the_planning_folder() {
     assert_eq!(loading.envmap.unwrap(), Path::new("/abs/sky.exr"));
     // The report keeps the path as given.
     assert_eq!(file.plan.config.scene.unwrap(), Path::new("scenes/a.pbrt"));
+}
+
+#[test]
+fn reference_bands_cover_every_row_once_in_whole_tile_rows() {
+    for height in 1..200u32 {
+        let tile_rows = height.div_ceil(BAND_ROWS);
+        for parts in 1..=tile_rows {
+            let mut next = 0;
+            for part in 0..parts {
+                let [y0, y1] = band_rows(height, part, parts);
+                assert_eq!(y0, next, "height {height}, {parts} parts");
+                assert!(y1 > y0 && (y0 % BAND_ROWS == 0), "{height} {parts} {part}");
+                next = y1;
+            }
+            assert_eq!(next, height);
+        }
+    }
+    // The default experiment: 256x144 at 1024 spp and 128x72 at 8192 spp,
+    // against 128x72 at 1024 spp, its largest other unit.
+    let mut c = config();
+    (c.resolution, c.spp, c.ref_spp) = ([256, 144], 16, 1024);
+    (c.conv_res, c.conv_max, c.conv_ref_spp) = ([128, 72], 1024, 8192);
+    assert_eq!(reference_parts(&c, Target::Main), 4);
+    // 8 wanted, but 72 rows hold 5 rows of tiles.
+    assert_eq!(reference_parts(&c, Target::Convergence), 5);
+    assert_eq!(band_rows(144, 3, 4), [96, 144]);
+    assert_eq!(band_rows(72, 4, 5), [64, 72]);
+    let plan = Plan::new(c, 0, [false, false]);
+    let bands: u64 = plan.units[..4]
+        .iter()
+        .map(|u| u.samples(&plan.config))
+        .sum();
+    assert_eq!(bands, 256 * 144 * 1024);
 }

@@ -15,20 +15,22 @@ use std::path::Path;
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
+use lowdisc_render::film::{Film, PixelBounds};
 use lowdisc_render::render::render;
 use lowdisc_render::scene::Scene;
 
 use crate::assemble::{UnitOutput, UnitSource};
 use crate::config::ExperimentConfig;
-use crate::plan::Unit;
 use crate::plan::file::PlanFile;
+use crate::plan::{Unit, Work, band_rows};
 use crate::progress::{Progress, Stage};
 use crate::run::load;
 use lock::{Lock, host_name, unix_now};
 use store::{Record, Store};
 
 /// Renders `unit` of the experiment `config` with `scene`, first set to
-/// the unit's resolution, reporting its samples to `stage`.
+/// the unit's resolution (a reference band: only its rows of the film's
+/// pixel bounds), reporting its samples to `stage`.
 pub fn render_unit(
     config: &ExperimentConfig,
     scene: &mut Scene,
@@ -39,7 +41,16 @@ pub fn render_unit(
     if scene.film().params.resolution != resolution {
         scene.set_resolution(resolution)?;
     }
-    let out = render(scene, &unit.options(config), stage)?;
+    let mut options = unit.options(config);
+    if let Work::Reference { part, parts, .. } = unit.work {
+        let bounds = Film::checked_bounds(&scene.film().params)?;
+        let [y0, y1] = band_rows(bounds.height() as u32, part, parts);
+        options.window = Some(PixelBounds::new(
+            [bounds.min[0], bounds.min[1] + y0 as i32],
+            [bounds.max[0], bounds.min[1] + y1 as i32],
+        ));
+    }
+    let out = render(scene, &options, stage)?;
     stage.finished_render(out.stats.samples);
     Ok(UnitOutput {
         image: out.image,
@@ -76,15 +87,6 @@ impl UnitSource for FromFiles<'_> {
             .record(unit.index, &self.plan.id)?
             .with_context(|| format!("unit {} is not done", unit.index))?;
         let image = self.store.image(&record)?;
-        let [w, h] = unit.resolution(&self.plan.plan.config);
-        if (image.width(), image.height()) != (w as usize, h as usize) {
-            bail!(
-                "the image of unit {} is {}x{}, the plan's is {w}x{h}",
-                unit.index,
-                image.width(),
-                image.height()
-            );
-        }
         stage.finished_render(record.samples);
         Ok(UnitOutput {
             image,

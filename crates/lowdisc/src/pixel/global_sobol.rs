@@ -232,6 +232,12 @@ impl GlobalSobolSampler {
         copy
     }
 
+    /// True in the paper's literal mode, whose values depend on every call
+    /// made before them in the stream.
+    pub fn is_order_dependent(&self) -> bool {
+        matches!(self.mode, GlobalSobolMode::PaperLiteral { .. })
+    }
+
     /// The image resolution given at construction.
     pub fn resolution(&self) -> [u32; 2] {
         self.resolution

@@ -63,6 +63,17 @@ impl Sampler {
             other => other.clone(),
         }
     }
+
+    /// True when a value depends on the calls made before it in the same
+    /// stream (the paper's literal mode), not only on the pixel, sample
+    /// index and dimension: to reproduce part of a tile, a renderer must
+    /// replay the tile's earlier calls in their order.
+    pub fn is_order_dependent(&self) -> bool {
+        match self {
+            Sampler::GlobalSobol(s) => s.is_order_dependent(),
+            _ => false,
+        }
+    }
 }
 
 impl PixelSampler for Sampler {

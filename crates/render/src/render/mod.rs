@@ -8,6 +8,18 @@
 //! in order. The image and every counter are therefore bit-identical whatever
 //! the number of threads.
 //!
+//! **Windows and sample ranges.** [`RenderOptions::window`] renders only
+//! some pixels and [`RenderOptions::samples`] only some sample indices of
+//! each. The tile grid is always that of the film's pixel bounds and tile
+//! `k` keeps stream `k`, so a pixel's sums in a window equal its sums in the
+//! whole render bit for bit: every sample goes to its own pixel only (see
+//! [`crate::film`]). A sampler whose values depend on the order of calls
+//! ([`Sampler::is_order_dependent`], the paper's literal mode) replays each
+//! touched tile from its first pixel up to the last sample needed, and the
+//! film keeps only the samples asked for. Each pixel's sums over a sample
+//! range are added in index order from 0, so merging ranges adds per-range
+//! sums: equal to the whole render's up to `f64` rounding (not bit for bit).
+//!
 //! **Non-finite samples.** A camera sample whose radiance is NaN or infinite is
 //! counted in [`RenderStats::nonfinite_samples`] and dropped by the film
 //! (neither its value nor its filter weight reaches the pixel); it is never
@@ -19,7 +31,7 @@
 mod options;
 
 pub use crate::error::RenderError;
-pub use options::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE, RenderOptions};
+pub use options::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE, RenderOptions, SampleRange};
 
 use crate::camera::camera_sample;
 use crate::film::{Film, FilmTile, PixelBounds};
@@ -132,9 +144,11 @@ pub fn render(
     progress: &dyn ProgressSink,
 ) -> Result<RenderOutput, RenderError> {
     opts.validate()?;
-    let mut film = Film::new(&scene.film().params).map_err(RenderError::Film)?;
+    let full = Film::new(&scene.film().params).map_err(RenderError::Film)?;
+    let window = opts.window_in(full.pixel_bounds())?;
+    let range = opts.sample_range();
     let sampler = SamplerConfig {
-        resolution: film.full_resolution(),
+        resolution: full.full_resolution(),
         ..opts.sampler
     }
     .build()?;
@@ -142,10 +156,16 @@ pub fn render(
     if scene.lights().is_empty() {
         warnings.push("the scene has no lights: the image is black".to_string());
     }
-    let rects = film.pixel_bounds().tiles(opts.tile_size);
+    // The whole film's tile grid, numbered before the window is applied.
+    let rects: Vec<(u64, PixelBounds)> = (full.pixel_bounds().tiles(opts.tile_size).into_iter())
+        .enumerate()
+        .filter(|(_, r)| r.intersect(&window).area() > 0)
+        .map(|(k, r)| (k as u64, r))
+        .collect();
+    let mut film = full.restricted(window);
     let total = Totals {
         tiles: rects.len(),
-        samples: film.pixel_bounds().area() as u64 * u64::from(opts.sampler.spp),
+        samples: window.area() as u64 * u64::from(range.len()),
         done: AtomicUsize::new(0),
         samples_done: AtomicU64::new(0),
         rays: AtomicU64::new(0),
@@ -154,9 +174,8 @@ pub fn render(
     let run = || -> Vec<TileResult> {
         rects
             .par_iter()
-            .enumerate()
-            .map(|(k, rect)| {
-                let r = render_tile(scene, opts, &sampler, k as u64, film.tile(*rect));
+            .map(|&(k, rect)| {
+                let r = render_tile(scene, opts, &sampler, k, rect, film.tile(rect));
                 total.finished(&r, progress);
                 r
             })
@@ -222,25 +241,44 @@ impl Totals {
     }
 }
 
-/// Renders one tile with its own sampler stream into its film tile.
+/// Renders the samples of `film` (the part of tile `rect` inside the window)
+/// with tile `k`'s sampler stream; an order-dependent sampler replays the
+/// tile from its first pixel.
 fn render_tile(
     scene: &Scene,
     opts: &RenderOptions,
     sampler: &Sampler,
     k: u64,
+    rect: PixelBounds,
     mut film: FilmTile,
 ) -> TileResult {
     let mut sampler = sampler.with_stream(k);
     let mut stats = PathStats::default();
     let (integrator, seed) = (&opts.integrator, opts.sampler.seed);
-    let bounds: PixelBounds = film.bounds();
+    let (kept, range) = (film.bounds(), opts.sample_range());
+    let replay = sampler.is_order_dependent();
+    let (pixels, indices) = if replay {
+        (rect, SampleRange::all(opts.sampler.spp))
+    } else {
+        (kept, range)
+    };
+    let last = kept.max.map(|m| m - 1);
     let mut samples = 0;
-    for pixel in bounds.pixels() {
-        for s in 0..opts.sampler.spp {
+    for pixel in pixels.pixels() {
+        let keep_pixel = kept.contains(pixel);
+        for s in indices.start..indices.end {
+            if replay && pixel == last && s >= range.end {
+                break;
+            }
             let (l, weight) =
                 trace_camera_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats);
-            film.add_sample(pixel, l, weight);
-            samples += 1;
+            if keep_pixel && range.contains(s) {
+                film.add_sample(pixel, l, weight);
+                samples += 1;
+            }
+        }
+        if pixel == last {
+            break;
         }
     }
     TileResult {

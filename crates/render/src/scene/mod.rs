@@ -278,6 +278,25 @@ impl Scene {
     pub fn film(&self) -> &FilmSettings {
         &self.film
     }
+    /// Writes, in `Debug` form, everything that determines the scene's
+    /// pixels: shapes, materials, lights, the camera and the film. The
+    /// acceleration structure (derived from the shapes, and carrying its
+    /// build time) is left out, so two loads of one scene write the same
+    /// text: the input of a content hash.
+    pub fn write_content(&self, out: &mut dyn std::fmt::Write) -> std::fmt::Result {
+        write!(
+            out,
+            "{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}",
+            self.accel.shapes(),
+            self.materials,
+            self.mesh_info,
+            self.sphere_info,
+            self.disk_info,
+            self.lights,
+            self.camera_spec,
+            self.film
+        )
+    }
     /// World bounds of the geometry.
     pub fn bounds(&self) -> Bounds3 {
         self.accel.bounds()

@@ -18,6 +18,10 @@
 //! for disjoint tiles into a fresh film each pixel receives exactly one
 //! addition, so the image is bit-identical whatever the merge order.
 
+mod bounds;
+
+pub use bounds::PixelBounds;
+
 use crate::spectrum::Rgb;
 use lowdisc_image::{ImageError, RgbImage, WriteOptions};
 use std::path::Path;
@@ -69,69 +73,6 @@ impl From<ImageError> for FilmError {
     }
 }
 
-/// A half-open rectangle of pixels `[min, max)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct PixelBounds {
-    /// Inclusive top-left pixel.
-    pub min: [i32; 2],
-    /// Exclusive bottom-right pixel.
-    pub max: [i32; 2],
-}
-
-impl PixelBounds {
-    /// Bounds from corners (empty when `max <= min` on an axis).
-    pub const fn new(min: [i32; 2], max: [i32; 2]) -> PixelBounds {
-        PixelBounds { min, max }
-    }
-    /// Width (0 when empty).
-    pub fn width(&self) -> usize {
-        (self.max[0] - self.min[0]).max(0) as usize
-    }
-    /// Height (0 when empty).
-    pub fn height(&self) -> usize {
-        (self.max[1] - self.min[1]).max(0) as usize
-    }
-    /// Number of pixels.
-    pub fn area(&self) -> usize {
-        self.width() * self.height()
-    }
-    /// True when `p` is inside.
-    pub fn contains(&self, p: [i32; 2]) -> bool {
-        p[0] >= self.min[0] && p[0] < self.max[0] && p[1] >= self.min[1] && p[1] < self.max[1]
-    }
-    /// The overlap with `o` (possibly empty).
-    pub fn intersect(&self, o: &PixelBounds) -> PixelBounds {
-        PixelBounds {
-            min: [self.min[0].max(o.min[0]), self.min[1].max(o.min[1])],
-            max: [self.max[0].min(o.max[0]), self.max[1].min(o.max[1])],
-        }
-    }
-    /// The pixels, row by row.
-    pub fn pixels(&self) -> impl Iterator<Item = [i32; 2]> + '_ {
-        (self.min[1]..self.max[1])
-            .flat_map(move |y| (self.min[0]..self.max[0]).map(move |x| [x, y]))
-    }
-    /// Square tiles of side `size` (at least 1) covering the bounds, in a
-    /// fixed row-major order; edge tiles are clipped.
-    pub fn tiles(&self, size: u32) -> Vec<PixelBounds> {
-        let s = size.max(1) as i32;
-        let mut out = Vec::new();
-        let mut y = self.min[1];
-        while y < self.max[1] {
-            let mut x = self.min[0];
-            while x < self.max[0] {
-                out.push(PixelBounds::new(
-                    [x, y],
-                    [(x + s).min(self.max[0]), (y + s).min(self.max[1])],
-                ));
-                x += s;
-            }
-            y += s;
-        }
-        out
-    }
-}
-
 /// The parameters of pbrt's `Film "rgb"`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FilmParams {
@@ -165,11 +106,32 @@ impl Default for FilmParams {
     }
 }
 
-/// One pixel's running sums.
+/// One pixel's running sums: `Σ w L` per channel and `Σ w`, each added in
+/// sample order from 0.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-struct PixelSum {
-    rgb: [f64; 3],
-    weight: f64,
+pub struct PixelSum {
+    /// The weighted radiance sums `Σ w L` (R, G, B).
+    pub rgb: [f64; 3],
+    /// The weight sum `Σ w`.
+    pub weight: f64,
+}
+
+impl PixelSum {
+    /// The pixel's value, `Σ w L / Σ w` rounded to `f32` (black where
+    /// `Σ w = 0`): the one definition of a pixel from its sums.
+    pub fn value(&self) -> [f32; 3] {
+        if self.weight == 0.0 {
+            return [0.0; 3];
+        }
+        self.rgb.map(|s| (s / self.weight) as f32)
+    }
+    /// Adds `o`'s sums to these.
+    pub fn add(&mut self, o: &PixelSum) {
+        for c in 0..3 {
+            self.rgb[c] += o.rgb[c];
+        }
+        self.weight += o.weight;
+    }
 }
 
 /// Weighted sums over a rectangle of pixels: the body of both [`Film`] and
@@ -226,11 +188,7 @@ impl Accumulator {
     }
 
     fn value(&self, i: usize) -> [f32; 3] {
-        let px = &self.pixels[i];
-        if px.weight == 0.0 {
-            return [0.0; 3];
-        }
-        px.rgb.map(|s| (s / px.weight) as f32)
+        self.pixels[i].value()
     }
 }
 
@@ -345,6 +303,29 @@ impl Film {
         self.acc.scale
     }
 
+    /// The same film restricted to the pixels of `window` inside its bounds
+    /// (its sums are kept there and dropped elsewhere): the film of a render
+    /// of a window of the image.
+    pub fn restricted(&self, window: PixelBounds) -> Film {
+        let bounds = window.intersect(&self.acc.bounds);
+        let mut acc = Accumulator::new(bounds, self.acc.scale, self.acc.max_component);
+        for (k, p) in bounds.pixels().enumerate() {
+            if let Some(i) = self.acc.index(p) {
+                acc.pixels[k] = self.acc.pixels[i];
+            }
+        }
+        Film {
+            full_resolution: self.full_resolution,
+            filename: self.filename.clone(),
+            acc,
+        }
+    }
+
+    /// Every pixel's sums, row-major over [`Self::pixel_bounds`].
+    pub fn sums(&self) -> &[PixelSum] {
+        &self.acc.pixels
+    }
+
     /// An empty tile over `bounds` clipped to the film, with the film's
     /// sensor settings.
     pub fn tile(&self, bounds: PixelBounds) -> FilmTile {
@@ -362,11 +343,7 @@ impl Film {
         let t = &tile.acc;
         for (k, p) in t.bounds.pixels().enumerate() {
             if let Some(i) = self.acc.index(p) {
-                let (dst, src) = (&mut self.acc.pixels[i], &t.pixels[k]);
-                for c in 0..3 {
-                    dst.rgb[c] += src.rgb[c];
-                }
-                dst.weight += src.weight;
+                self.acc.pixels[i].add(&t.pixels[k]);
             }
         }
         self.acc.nonfinite += t.nonfinite;
