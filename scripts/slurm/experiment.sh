@@ -7,9 +7,10 @@
 #
 # EXPERIMENT OPTIONS are those of `lowdisc experiment` (scene, --samplers,
 # --runs, --paper, --quick, ...) and go to `lowdisc experiment plan ... --out
-# DIR`. If DIR/plan.json exists already, it is reused (give no experiment
-# options then): units already done are skipped, so resubmitting after a
-# failure runs only what is left.
+# DIR`. If DIR/plan.json exists already, it is reused when no experiment
+# options are given or they make the same plan (lowdisc refuses another):
+# units already done are skipped, so resubmitting after a failure runs only
+# what is left.
 #
 # Slurm (the default runner): the units become one array job
 #   sbatch --array=0-(N-1)%K ... lowdisc experiment unit DIR --index $SLURM_ARRAY_TASK_ID
@@ -117,11 +118,11 @@ case "$lowdisc" in /*) ;; */*) lowdisc="$(pwd)/$lowdisc" ;; *) lowdisc=$(command
 mkdir -p "$out"
 dir="$(cd "$out" && pwd)"
 plan="$dir/plan.json"
-if [ -f "$plan" ]; then
-  [ ${#exp_args[@]} -eq 0 ] ||
-    die "$plan exists; to resubmit it pass only --out (units done are skipped), or plan into a new folder"
+if [ -f "$plan" ] && [ ${#exp_args[@]} -eq 0 ]; then
   echo "experiment.sh: reusing $plan"
 else
+  # An existing plan.json is kept if these options make the same plan, and
+  # refused (with an error) if they make another.
   "$lowdisc" experiment plan "${exp_args[@]}" --out "$dir"
   [ -f "$plan" ] || die "lowdisc experiment plan wrote no $plan"
 fi

@@ -6,9 +6,8 @@
 results.json must be equal value for value (floats compared exactly, as
 parsed from the JSON text), leaving out what depends on when, where and how
 the run was started rather than on what it computed: every `*time_s` field,
-`command` (the argv), `machine` and `cached` (whether a reference came from
-the cache); a `file` field (the reference cache's path, which lies beside the
-run's folder) is compared by its file name only. Every image (`*.exr`,
+`command` (the argv) and `git_hash`; a `file` field (the reference cache's
+path, which lies beside the run's folder) is compared by its file name only. Every image (`*.exr`,
 `*.png`) of the first folder must exist in the second with the same bytes. Prints each
 difference (at most 20) and exits 1 if there is any.
 """
@@ -17,7 +16,7 @@ import json
 import sys
 from pathlib import Path
 
-IGNORED_KEYS = {"command", "machine", "cached"}
+IGNORED_KEYS = {"command", "git_hash"}
 MAX_SHOWN = 20
 
 

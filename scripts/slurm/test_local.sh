@@ -10,8 +10,8 @@
 #
 # Needs root (apt-get, SlurmUser=root). The binary is $LOWDISC, else this
 # checkout's target/debug/lowdisc (what `cargo test` builds), else it is built
-# with `cargo build -p lowdisc-cli`. LOWDISC_SLURM_TEST_TIMEOUT (default 600)
-# bounds each wait for Slurm jobs, in seconds.
+# with `cargo build --profile test -p lowdisc-cli`. LOWDISC_SLURM_TEST_TIMEOUT
+# (default 600) bounds each wait for Slurm jobs, in seconds.
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -28,8 +28,8 @@ step() { echo "== test_local: $*"; }
 
 lowdisc="${LOWDISC:-$root/target/debug/lowdisc}"
 if [ ! -x "$lowdisc" ]; then
-  step "building lowdisc (cargo build -p lowdisc-cli)"
-  (cd "$root" && cargo build -q -p lowdisc-cli)
+  step "building lowdisc (cargo build --profile test -p lowdisc-cli)"
+  (cd "$root" && cargo build -q --profile test -p lowdisc-cli)
 fi
 [ -x "$lowdisc" ] || fail "no lowdisc binary at $lowdisc"
 
