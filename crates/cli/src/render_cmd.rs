@@ -99,6 +99,10 @@ pub struct RenderArgs {
     /// Largest memory (MiB) of the film and its image.
     #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
     max_memory: u64,
+    /// Render spectrally as pbrt-v4 (four sampled wavelengths per sample, RGB
+    /// uplifted to spectra, CIE 1931 sensor) instead of in RGB, the default.
+    #[arg(long)]
+    spectral: bool,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -138,6 +142,8 @@ pub struct RenderConfig {
     pub quiet: bool,
     /// Memory limit (MiB) of the film.
     pub max_memory: u64,
+    /// Spectral rendering instead of RGB.
+    pub spectral: bool,
 }
 
 impl RenderArgs {
@@ -177,6 +183,7 @@ impl RenderArgs {
             stats: self.stats,
             quiet: self.quiet,
             max_memory: self.max_memory,
+            spectral: self.spectral,
         })
     }
 }
@@ -329,6 +336,7 @@ fn prepare(
         },
         threads: config.threads,
         tile_size: 16,
+        spectral: config.spectral,
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;

@@ -90,6 +90,7 @@ mod tests {
             threshold: 0.5,
             max_depth: 5,
             threads: None,
+            spectral: false,
             out: "out".into(),
             command: Vec::new(),
             preset: None,

@@ -25,7 +25,7 @@ use super::diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 use super::layered::LayeredBxdf;
 use super::{Bsdf, Bxdf, BxdfModel};
 use crate::math::{Point2, Point3, Vec3};
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
 pub use mix::{MixMaterial, mix_choice};
 pub use params::{ConductorSpec, Roughness};
@@ -250,23 +250,35 @@ impl Material {
     }
 
     /// The world-space BSDF at a shading point, with textures evaluated at
-    /// `ctx.uv` / `ctx.p`.
+    /// `ctx.uv` / `ctx.p` (RGB mode).
     pub fn bsdf(&self, ctx: &BsdfContext) -> Bsdf {
-        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_at(ctx))
+        self.bsdf_for(ctx, &())
+    }
+
+    /// [`Material::bsdf`] in colour `C` at wavelengths `w` (RGB parameters
+    /// uplifted as [`Colour`]'s constructors say).
+    pub fn bsdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bsdf<C> {
+        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_for(ctx, w))
     }
 
     /// The local-frame BxDF at a shading point (textures evaluated there).
     pub fn bxdf_at(&self, ctx: &BsdfContext) -> Bxdf {
+        self.bxdf_for(ctx, &())
+    }
+
+    /// [`Material::bxdf_at`] in colour `C` at wavelengths `w`.
+    pub fn bxdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bxdf<C> {
         let fix_eta = |e: f32| if e > 0.0 && e.is_finite() { e } else { 1.0 };
         let tc = ctx.texture_context();
         let seed = ctx.seed;
+        let albedo = |t: &SpectrumTexture| C::albedo(t.evaluate(&tc), w);
         match self {
-            Material::Mix(m) => m.choose(ctx).bxdf_at(ctx),
+            Material::Mix(m) => m.choose(ctx).bxdf_for(ctx, w),
             Material::Diffuse { reflectance } => {
-                Bxdf::Diffuse(DiffuseBxdf::new(reflectance.evaluate(&tc)))
+                Bxdf::Diffuse(DiffuseBxdf::new(albedo(reflectance)))
             }
             Material::Conductor { spec, roughness } => {
-                let (eta, k) = spec.evaluate(&tc).eta_k();
+                let (eta, k) = spec.evaluate(&tc).eta_k_for(w);
                 let distribution = roughness.evaluate(&tc).distribution();
                 Bxdf::Conductor(ConductorBxdf::new(distribution, eta, k))
             }
@@ -282,8 +294,8 @@ impl Material {
                 transmittance,
                 scale,
             } => Bxdf::DiffuseTransmission(DiffuseTransmissionBxdf::new(
-                reflectance.evaluate(&tc) * *scale,
-                transmittance.evaluate(&tc) * *scale,
+                albedo(reflectance) * *scale,
+                albedo(transmittance) * *scale,
             )),
             Material::CoatedDiffuse {
                 reflectance,
@@ -294,7 +306,7 @@ impl Material {
                 n_samples,
             } => Bxdf::CoatedDiffuse(LayeredBxdf::new(
                 DielectricBxdf::new(fix_eta(*eta), roughness.evaluate(&tc).distribution()),
-                DiffuseBxdf::new(reflectance.evaluate(&tc)),
+                DiffuseBxdf::new(albedo(reflectance)),
                 thickness.evaluate(&tc),
                 *max_depth,
                 *n_samples,
@@ -312,7 +324,7 @@ impl Material {
                 let ieta = fix_eta(*interface_eta);
                 // As pbrt-v4: the conductor sits under the coating, so its
                 // index is relative to the coating's.
-                let (eta, k) = conductor.evaluate(&tc).eta_k();
+                let (eta, k): (C, C) = conductor.evaluate(&tc).eta_k_for(w);
                 let distribution = conductor_roughness.evaluate(&tc).distribution();
                 let base = ConductorBxdf::new(distribution, eta / ieta, k / ieta);
                 Bxdf::CoatedConductor(LayeredBxdf::new(
@@ -335,6 +347,7 @@ impl Material {
         let spec = |s: &ConductorSpec<SpectrumTexture>| match s {
             ConductorSpec::EtaK { eta, k } => rgb(eta) && rgb(k),
             ConductorSpec::Reflectance(r) => rgb(r),
+            ConductorSpec::Named { .. } => true,
         };
         self.roughness_is_constant()
             && match self {

@@ -33,17 +33,22 @@ pub struct RenderOptions {
     pub threads: Option<usize>,
     /// Tile side in pixels.
     pub tile_size: u32,
+    /// Spectral rendering (four sampled wavelengths per camera sample, RGB
+    /// parameters uplifted to spectra, a CIE 1931 sensor); `false` renders
+    /// in RGB (see [`crate::spectrum`]).
+    pub spectral: bool,
 }
 
 impl Default for RenderOptions {
     /// ZSobol, seed 0, 16 samples per pixel, the default path tracer, all
-    /// cores, 16-pixel tiles.
+    /// cores, 16-pixel tiles, RGB.
     fn default() -> Self {
         RenderOptions {
             sampler: SamplerConfig::new(SamplerName::ZSobol),
             integrator: PathIntegrator::default(),
             threads: None,
             tile_size: 16,
+            spectral: false,
         }
     }
 }
