@@ -121,6 +121,10 @@ pub struct ExperimentArgs {
     /// Worker threads [default: all cores].
     #[arg(long, value_name = "T")]
     threads: Option<usize>,
+    /// Render spectrally (four sampled wavelengths per sample, as pbrt-v4)
+    /// instead of in RGB, the default; the references are cached apart.
+    #[arg(long)]
+    spectral: bool,
     /// Output folder (created if missing).
     #[arg(long, value_name = "DIR", default_value = "experiment")]
     out: PathBuf,
@@ -213,6 +217,7 @@ impl ExperimentArgs {
                 .maxdepth
                 .unwrap_or(preset.map_or(DEFAULT_MAX_DEPTH, |p| p.max_depth())),
             threads: self.threads,
+            spectral: self.spectral,
             out: self.out,
             command: std::env::args().collect(),
         };

@@ -95,6 +95,37 @@ fn renders_the_cornell_box_to_png_and_exr() {
     assert_eq!(names.len(), 2, "{names:?}");
 }
 
+#[test]
+fn spectral_flag_renders_what_the_library_renders_spectrally() {
+    let dir = temp_dir("render-spectral");
+    let exr = dir.join("s.exr");
+    let args = [
+        "render",
+        "--res",
+        "16x8",
+        "--spp",
+        "4",
+        "--quiet",
+        "--spectral",
+    ];
+    let out = lowdisc(&[&args[..], &["-o", exr.to_str().unwrap()]].concat());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let image = lowdisc_image::read_image(&exr).unwrap();
+    let scene = cornell_box([16, 8]).unwrap();
+    let opts = |spectral| RenderOptions {
+        spectral,
+        ..RenderOptions::new(SamplerName::ZSobol, 0, 4)
+    };
+    let spectral = render(&scene, &opts(true), &NoProgress).unwrap();
+    assert_eq!(image.pixels(), spectral.image.pixels());
+    let rgb = render(&scene, &opts(false), &NoProgress).unwrap();
+    assert_ne!(image.pixels(), rgb.image.pixels());
+}
+
 /// Runs `lowdisc render ARGS`, expects a one-line error and no panic.
 fn fails(args: &[&str], needle: &str) {
     let mut all = vec!["render"];

@@ -53,6 +53,9 @@ pub struct ExperimentConfig {
     pub max_depth: u32,
     /// Threads.
     pub threads: Option<usize>,
+    /// Render spectrally (wavelength sampling in the loop) instead of in
+    /// RGB, the default.
+    pub spectral: bool,
     /// Output folder.
     pub out: PathBuf,
     /// The command line that asked for this experiment, kept in `results.json`.

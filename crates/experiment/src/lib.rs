@@ -43,7 +43,7 @@
 //! - `results.json`, schema (every number of the report):
 //!   `{ schema: 1, command: [args], version, git_hash?, machine: {cpu, cores},
 //!   settings: {scene, width, height, spp, runs, ref_spp, ref_sampler, ref_seed,
-//!   max_depth, threshold, conv_max, conv_res: [w, h], conv_ref_spp, samplers:
+//!   max_depth, spectral, threshold, conv_max, conv_res: [w, h], conv_ref_spp, samplers:
 //!   [names]}, reference: {file, cached, time_s}, convergence_reference:
 //!   {file, cached, time_s}, samplers: [{ name, description, deterministic,
 //!   time_s, mse, relmse, rmse, mae (linear, each {mean, sd}),

@@ -108,7 +108,7 @@ pub fn cache_file(
     scene_hash: u64,
     spp: u32,
 ) -> PathBuf {
-    let key = format!(
+    let mut key = format!(
         "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
         resolution,
         spp,
@@ -117,6 +117,9 @@ pub fn cache_file(
         config.max_depth,
         env!("CARGO_PKG_VERSION")
     );
+    if config.spectral {
+        key.push_str(" spectral");
+    }
     let hash = fnv1a(FNV_OFFSET, key.as_bytes());
     cache_dir(&config.out).join(format!("ref-{hash:016x}.pfm"))
 }

@@ -101,6 +101,7 @@ pub fn options(
         },
         threads: config.threads,
         tile_size: 16,
+        spectral: config.spectral,
         ..RenderOptions::default()
     }
 }

@@ -3,8 +3,9 @@
 //! the lens (dimensions 0-1), then exactly `DIMS_PER_BOUNCE` dimensions per
 //! scattering vertex in the order light choice (1), light position (2), BSDF
 //! lobe (1), BSDF direction (2), Russian roulette (1) - so bounce `k` starts
-//! at dimension `2 + 7k`. Also: the BSDF seed given to the path reaches the
-//! layered BSDFs.
+//! at dimension `2 + 7k`. In spectral mode the wavelength sample comes
+//! first (dimension 0), the lens takes 1-2 and bounce `k` starts at `3 + 7k`.
+//! Also: the BSDF seed given to the path reaches the layered BSDFs.
 
 use lowdisc::pixel::PixelSampler;
 use lowdisc_render::bsdf::{Material, Roughness};
@@ -14,7 +15,7 @@ use lowdisc_render::geometry::Sphere;
 use lowdisc_render::integrator::{DIMS_PER_BOUNCE, PathIntegrator, PathStats};
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
-use lowdisc_render::render::trace_camera_sample;
+use lowdisc_render::render::{trace_camera_sample, trace_spectral_sample};
 use lowdisc_render::scene::{CameraSpec, FilmSettings, Scene, SceneBuilder};
 use lowdisc_render::spectrum::Rgb;
 
@@ -160,4 +161,30 @@ fn the_bsdf_seed_reaches_the_layered_bsdfs() {
     assert_eq!(log_a, log_b);
     assert_eq!(a, a_again, "deterministic for one seed");
     assert_ne!(a, b, "the seed changes the layered BSDF's walks");
+}
+
+#[test]
+fn spectral_samples_draw_the_wavelength_first_then_the_rgb_layout_shifted_by_one() {
+    let scene = inside_a_sphere(Material::diffuse(Rgb::splat(0.8)));
+    let integrator = PathIntegrator {
+        max_depth: 3,
+        ..PathIntegrator::default()
+    };
+    let mut sampler = CountingSampler::default();
+    let mut stats = PathStats::default();
+    let (xyz, _) =
+        trace_spectral_sample(&scene, &integrator, &mut sampler, [1, 2], 0, 0, &mut stats);
+    assert!(xyz.g > 0.0, "lit: {xyz:?}");
+    let mut want = vec![Draw::Start(0), Draw::OneD(0), Draw::Pixel2d, Draw::TwoD(1)];
+    for k in 0..3 {
+        let d = 3 + DIMS_PER_BOUNCE * k;
+        want.extend([
+            Draw::OneD(d),
+            Draw::TwoD(d + 1),
+            Draw::OneD(d + 3),
+            Draw::TwoD(d + 4),
+            Draw::OneD(d + 6),
+        ]);
+    }
+    assert_eq!(sampler.log, want);
 }

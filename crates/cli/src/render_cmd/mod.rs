@@ -115,6 +115,10 @@ pub struct RenderArgs {
     /// pixel, and write a part for `lowdisc merge`.
     #[arg(long, value_name = "A..B")]
     sample_range: Option<String>,
+    /// Render spectrally as pbrt-v4 (four sampled wavelengths per sample, RGB
+    /// uplifted to spectra, CIE 1931 sensor) instead of in RGB, the default.
+    #[arg(long)]
+    spectral: bool,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -158,6 +162,8 @@ pub struct RenderConfig {
     pub window: Option<PixelBounds>,
     /// The sample indices to take (`--sample-range`).
     pub samples: Option<SampleRange>,
+    /// Spectral rendering instead of RGB.
+    pub spectral: bool,
 }
 
 impl RenderConfig {
@@ -214,6 +220,7 @@ impl RenderArgs {
                 .as_deref()
                 .map(parse::sample_range)
                 .transpose()?,
+            spectral: self.spectral,
         })
     }
 }

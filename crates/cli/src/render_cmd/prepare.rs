@@ -118,6 +118,7 @@ pub(super) fn prepare(
         tile_size: 16,
         window: config.window,
         samples: config.samples,
+        spectral: config.spectral,
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;

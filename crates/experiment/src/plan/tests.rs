@@ -22,6 +22,7 @@ fn config() -> ExperimentConfig {
         threshold: 0.3,
         max_depth: 5,
         threads: None,
+        spectral: false,
         out: "out".into(),
         command: vec!["lowdisc".into(), "experiment".into()],
         preset: None,

@@ -56,6 +56,7 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
             "ref_sampler": REF_SAMPLER.as_str(),
             "ref_seed": REF_SEED,
             "max_depth": config.max_depth,
+            "spectral": config.spectral,
             "threshold": config.threshold,
             "conv_max": config.conv_max,
             "conv_res": config.conv_res,

@@ -3,32 +3,32 @@
 //! visible normals; a delta mirror when the surface is effectively smooth
 //! (pbrt-v4's `ConductorBxDF`).
 
-use super::fresnel::{fr_complex_rgb, reflect};
+use super::fresnel::{fr_complex_colour, reflect};
 use super::microfacet::TrowbridgeReitz;
 use super::{BsdfSample, BxdfFlags, BxdfModel, SampleFlags, TransportMode};
 use crate::math::Vec3;
 use crate::math::spherical::same_hemisphere;
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 
 /// A GGX conductor with complex index of refraction `eta + i k` per channel.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ConductorBxdf {
+pub struct ConductorBxdf<C = Rgb> {
     /// Microfacet distribution.
     pub distrib: TrowbridgeReitz,
     /// Real part of the relative index of refraction.
-    pub eta: Rgb,
+    pub eta: C,
     /// Absorption coefficient (imaginary part).
-    pub k: Rgb,
+    pub k: C,
 }
 
-impl ConductorBxdf {
+impl<C: Colour> ConductorBxdf<C> {
     /// A conductor with the given distribution and optical constants.
-    pub fn new(distrib: TrowbridgeReitz, eta: Rgb, k: Rgb) -> Self {
+    pub fn new(distrib: TrowbridgeReitz, eta: C, k: C) -> Self {
         ConductorBxdf { distrib, eta, k }
     }
 }
 
-impl BxdfModel for ConductorBxdf {
+impl<C: Colour> BxdfModel<C> for ConductorBxdf<C> {
     fn flags(&self) -> BxdfFlags {
         if self.distrib.effectively_smooth() {
             BxdfFlags::SPECULAR_REFLECTION
@@ -37,20 +37,20 @@ impl BxdfModel for ConductorBxdf {
         }
     }
 
-    fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> Rgb {
+    fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> C {
         if !same_hemisphere(wo, wi) || self.distrib.effectively_smooth() {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         let (cos_o, cos_i) = (wo.z.abs(), wi.z.abs());
         if cos_o == 0.0 || cos_i == 0.0 {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         let wm = wi + wo;
         if wm.length_squared() == 0.0 {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         let wm = wm.normalize();
-        let fr = fr_complex_rgb(wo.abs_dot(wm), self.eta, self.k);
+        let fr = fr_complex_colour(wo.abs_dot(wm), self.eta, self.k);
         fr * (self.distrib.d(wm) * self.distrib.g(wo, wi) / (4.0 * cos_i * cos_o))
     }
 
@@ -61,7 +61,7 @@ impl BxdfModel for ConductorBxdf {
         u: [f32; 2],
         _mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         if !sample.reflection() {
             return None;
         }
@@ -71,7 +71,7 @@ impl BxdfModel for ConductorBxdf {
             if c == 0.0 {
                 return None;
             }
-            let f = fr_complex_rgb(c, self.eta, self.k) / c;
+            let f = fr_complex_colour(c, self.eta, self.k) / c;
             return Some(BsdfSample::new(f, wi, 1.0, BxdfFlags::SPECULAR_REFLECTION));
         }
         if wo.z == 0.0 {
@@ -87,7 +87,7 @@ impl BxdfModel for ConductorBxdf {
         if cos_o == 0.0 || cos_i == 0.0 || !(pdf > 0.0) {
             return None;
         }
-        let fr = fr_complex_rgb(wo.abs_dot(wm), self.eta, self.k);
+        let fr = fr_complex_colour(wo.abs_dot(wm), self.eta, self.k);
         let f = fr * (self.distrib.d(wm) * self.distrib.g(wo, wi) / (4.0 * cos_i * cos_o));
         Some(BsdfSample::new(f, wi, pdf, BxdfFlags::GLOSSY_REFLECTION))
     }

@@ -9,7 +9,7 @@ use super::microfacet::TrowbridgeReitz;
 use super::{BsdfSample, BxdfFlags, BxdfModel, SampleFlags, TransportMode};
 use crate::math::Vec3;
 use crate::math::spherical::same_hemisphere;
-use crate::spectrum::Rgb;
+use crate::spectrum::Colour;
 
 /// A dielectric interface with relative index `eta` (inside, `-z`, over
 /// outside, `+z`). `eta == 1` is an index-matched pass-through.
@@ -64,13 +64,13 @@ impl DielectricBxdf {
         Some((wm, etap, reflect))
     }
 
-    fn smooth_sample(
+    fn smooth_sample<C: Colour>(
         &self,
         wo: Vec3,
         uc: f32,
         mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         let r = fr_dielectric(wo.z, self.eta);
         let t = 1.0 - r;
         let (pr, pt) = lobe_probs(r, t, sample);
@@ -79,7 +79,7 @@ impl DielectricBxdf {
         }
         if uc < pr / (pr + pt) {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
-            let fr = Rgb::splat(r / wi.z.abs());
+            let fr = C::splat(r / wi.z.abs());
             Some(BsdfSample::new(
                 fr,
                 wi,
@@ -96,7 +96,7 @@ impl DielectricBxdf {
                 ft /= etap * etap;
             }
             let mut s = BsdfSample::new(
-                Rgb::splat(ft),
+                C::splat(ft),
                 wi,
                 pt / (pr + pt),
                 BxdfFlags::SPECULAR_TRANSMISSION,
@@ -107,8 +107,11 @@ impl DielectricBxdf {
     }
 }
 
-impl BxdfModel for DielectricBxdf {
-    fn flags(&self) -> BxdfFlags {
+/// The colour-independent parts of the dielectric (inherent, so that calls
+/// need no colour type).
+impl DielectricBxdf {
+    /// The lobes present.
+    pub fn flags(&self) -> BxdfFlags {
         if self.eta == 1.0 {
             return BxdfFlags::SPECULAR_TRANSMISSION;
         }
@@ -120,83 +123,8 @@ impl BxdfModel for DielectricBxdf {
         BxdfFlags::REFLECTION | BxdfFlags::TRANSMISSION | lobe
     }
 
-    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb {
-        if self.eta == 1.0 || self.distrib.effectively_smooth() {
-            return Rgb::ZERO;
-        }
-        let Some((wm, etap, is_reflect)) = self.half_vector(wo, wi) else {
-            return Rgb::ZERO;
-        };
-        let d = &self.distrib;
-        let fr = fr_dielectric(wo.dot(wm), self.eta);
-        if is_reflect {
-            Rgb::splat(d.d(wm) * d.g(wo, wi) * fr / (4.0 * wi.z * wo.z).abs())
-        } else {
-            let denom = (wi.dot(wm) + wo.dot(wm) / etap).powi(2) * wi.z * wo.z;
-            let mut ft =
-                d.d(wm) * (1.0 - fr) * d.g(wo, wi) * (wi.dot(wm) * wo.dot(wm) / denom).abs();
-            if mode == TransportMode::Radiance {
-                ft /= etap * etap;
-            }
-            Rgb::splat(ft)
-        }
-    }
-
-    fn sample_f(
-        &self,
-        wo: Vec3,
-        uc: f32,
-        u: [f32; 2],
-        mode: TransportMode,
-        sample: SampleFlags,
-    ) -> Option<BsdfSample> {
-        if self.eta == 1.0 || self.distrib.effectively_smooth() {
-            return self.smooth_sample(wo, uc, mode, sample);
-        }
-        if wo.z == 0.0 {
-            return None;
-        }
-        let d = &self.distrib;
-        let wm = d.sample_wm(wo, u);
-        let r = fr_dielectric(wo.dot(wm), self.eta);
-        let (pr, pt) = lobe_probs(r, 1.0 - r, sample);
-        if pr == 0.0 && pt == 0.0 {
-            return None;
-        }
-        if uc < pr / (pr + pt) {
-            let wi = reflect(wo, wm);
-            if !same_hemisphere(wo, wi) {
-                return None;
-            }
-            let pdf = d.pdf(wo, wm) / (4.0 * wo.abs_dot(wm)) * pr / (pr + pt);
-            let f = d.d(wm) * d.g(wo, wi) * r / (4.0 * wi.z * wo.z);
-            (pdf > 0.0)
-                .then(|| BsdfSample::new(Rgb::splat(f), wi, pdf, BxdfFlags::GLOSSY_REFLECTION))
-        } else {
-            let (wi, etap) = refract(wo, wm, self.eta)?;
-            if same_hemisphere(wo, wi) || wi.z == 0.0 {
-                return None;
-            }
-            let denom = (wi.dot(wm) + wo.dot(wm) / etap).powi(2);
-            let dwm_dwi = wi.abs_dot(wm) / denom;
-            let pdf = d.pdf(wo, wm) * dwm_dwi * pt / (pr + pt);
-            let mut ft = (1.0 - r)
-                * d.d(wm)
-                * d.g(wo, wi)
-                * (wi.dot(wm) * wo.dot(wm) / (wi.z * wo.z * denom)).abs();
-            if mode == TransportMode::Radiance {
-                ft /= etap * etap;
-            }
-            if !(pdf > 0.0) {
-                return None;
-            }
-            let mut s = BsdfSample::new(Rgb::splat(ft), wi, pdf, BxdfFlags::GLOSSY_TRANSMISSION);
-            s.eta = etap;
-            Some(s)
-        }
-    }
-
-    fn pdf(&self, wo: Vec3, wi: Vec3, _mode: TransportMode, sample: SampleFlags) -> f32 {
+    /// Solid-angle density of sampling `wi` (zero for delta lobes).
+    pub fn pdf(&self, wo: Vec3, wi: Vec3, _mode: TransportMode, sample: SampleFlags) -> f32 {
         if self.eta == 1.0 || self.distrib.effectively_smooth() {
             return 0.0;
         }
@@ -217,8 +145,98 @@ impl BxdfModel for DielectricBxdf {
         }
     }
 
-    fn regularize(&mut self) {
+    /// Widens a near-specular lobe.
+    pub fn regularize(&mut self) {
         self.distrib.regularize();
+    }
+}
+
+impl<C: Colour> BxdfModel<C> for DielectricBxdf {
+    fn flags(&self) -> BxdfFlags {
+        DielectricBxdf::flags(self)
+    }
+
+    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> C {
+        if self.eta == 1.0 || self.distrib.effectively_smooth() {
+            return C::ZERO;
+        }
+        let Some((wm, etap, is_reflect)) = self.half_vector(wo, wi) else {
+            return C::ZERO;
+        };
+        let d = &self.distrib;
+        let fr = fr_dielectric(wo.dot(wm), self.eta);
+        if is_reflect {
+            C::splat(d.d(wm) * d.g(wo, wi) * fr / (4.0 * wi.z * wo.z).abs())
+        } else {
+            let denom = (wi.dot(wm) + wo.dot(wm) / etap).powi(2) * wi.z * wo.z;
+            let mut ft =
+                d.d(wm) * (1.0 - fr) * d.g(wo, wi) * (wi.dot(wm) * wo.dot(wm) / denom).abs();
+            if mode == TransportMode::Radiance {
+                ft /= etap * etap;
+            }
+            C::splat(ft)
+        }
+    }
+
+    fn sample_f(
+        &self,
+        wo: Vec3,
+        uc: f32,
+        u: [f32; 2],
+        mode: TransportMode,
+        sample: SampleFlags,
+    ) -> Option<BsdfSample<C>> {
+        if self.eta == 1.0 || self.distrib.effectively_smooth() {
+            return self.smooth_sample(wo, uc, mode, sample);
+        }
+        if wo.z == 0.0 {
+            return None;
+        }
+        let d = &self.distrib;
+        let wm = d.sample_wm(wo, u);
+        let r = fr_dielectric(wo.dot(wm), self.eta);
+        let (pr, pt) = lobe_probs(r, 1.0 - r, sample);
+        if pr == 0.0 && pt == 0.0 {
+            return None;
+        }
+        if uc < pr / (pr + pt) {
+            let wi = reflect(wo, wm);
+            if !same_hemisphere(wo, wi) {
+                return None;
+            }
+            let pdf = d.pdf(wo, wm) / (4.0 * wo.abs_dot(wm)) * pr / (pr + pt);
+            let f = d.d(wm) * d.g(wo, wi) * r / (4.0 * wi.z * wo.z);
+            (pdf > 0.0).then(|| BsdfSample::new(C::splat(f), wi, pdf, BxdfFlags::GLOSSY_REFLECTION))
+        } else {
+            let (wi, etap) = refract(wo, wm, self.eta)?;
+            if same_hemisphere(wo, wi) || wi.z == 0.0 {
+                return None;
+            }
+            let denom = (wi.dot(wm) + wo.dot(wm) / etap).powi(2);
+            let dwm_dwi = wi.abs_dot(wm) / denom;
+            let pdf = d.pdf(wo, wm) * dwm_dwi * pt / (pr + pt);
+            let mut ft = (1.0 - r)
+                * d.d(wm)
+                * d.g(wo, wi)
+                * (wi.dot(wm) * wo.dot(wm) / (wi.z * wo.z * denom)).abs();
+            if mode == TransportMode::Radiance {
+                ft /= etap * etap;
+            }
+            if !(pdf > 0.0) {
+                return None;
+            }
+            let mut s = BsdfSample::new(C::splat(ft), wi, pdf, BxdfFlags::GLOSSY_TRANSMISSION);
+            s.eta = etap;
+            Some(s)
+        }
+    }
+
+    fn pdf(&self, wo: Vec3, wi: Vec3, mode: TransportMode, sample: SampleFlags) -> f32 {
+        DielectricBxdf::pdf(self, wo, wi, mode, sample)
+    }
+
+    fn regularize(&mut self) {
+        DielectricBxdf::regularize(self);
     }
 }
 
@@ -232,6 +250,10 @@ pub struct ThinDielectricBxdf {
 }
 
 impl ThinDielectricBxdf {
+    /// The lobes present (delta reflection and transmission).
+    pub fn flags(&self) -> BxdfFlags {
+        BxdfFlags::REFLECTION | BxdfFlags::TRANSMISSION | BxdfFlags::SPECULAR
+    }
     /// A thin sheet; a non-finite or non-positive `eta` becomes 1.
     pub fn new(eta: f32) -> Self {
         let eta = if eta > 0.0 && eta.is_finite() {
@@ -243,12 +265,12 @@ impl ThinDielectricBxdf {
     }
 }
 
-impl BxdfModel for ThinDielectricBxdf {
+impl<C: Colour> BxdfModel<C> for ThinDielectricBxdf {
     fn flags(&self) -> BxdfFlags {
-        BxdfFlags::REFLECTION | BxdfFlags::TRANSMISSION | BxdfFlags::SPECULAR
+        ThinDielectricBxdf::flags(self)
     }
-    fn f(&self, _wo: Vec3, _wi: Vec3, _mode: TransportMode) -> Rgb {
-        Rgb::ZERO
+    fn f(&self, _wo: Vec3, _wi: Vec3, _mode: TransportMode) -> C {
+        C::ZERO
     }
     fn sample_f(
         &self,
@@ -257,7 +279,7 @@ impl BxdfModel for ThinDielectricBxdf {
         _u: [f32; 2],
         _mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         let mut r = fr_dielectric(wo.z.abs(), self.eta);
         let mut t = 1.0 - r;
         if r < 1.0 {
@@ -275,14 +297,14 @@ impl BxdfModel for ThinDielectricBxdf {
         if uc < pr / (pr + pt) {
             let wi = Vec3::new(-wo.x, -wo.y, wo.z);
             Some(BsdfSample::new(
-                Rgb::splat(r / c),
+                C::splat(r / c),
                 wi,
                 pr / (pr + pt),
                 BxdfFlags::SPECULAR_REFLECTION,
             ))
         } else {
             Some(BsdfSample::new(
-                Rgb::splat(t / c),
+                C::splat(t / c),
                 -wo,
                 pt / (pr + pt),
                 BxdfFlags::SPECULAR_TRANSMISSION,

@@ -7,26 +7,26 @@ use super::{
 };
 use crate::math::Vec3;
 use crate::math::spherical::same_hemisphere;
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 use std::f32::consts::FRAC_1_PI;
 
 /// Lambertian reflection `f = R / π`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DiffuseBxdf {
+pub struct DiffuseBxdf<C = Rgb> {
     /// Reflectance (albedo), each channel in `[0, 1]`.
-    pub r: Rgb,
+    pub r: C,
 }
 
-impl DiffuseBxdf {
+impl<C: Colour> DiffuseBxdf<C> {
     /// A Lambertian reflector; `r` is clamped to `[0, 1]` per channel.
-    pub fn new(r: Rgb) -> Self {
+    pub fn new(r: C) -> Self {
         DiffuseBxdf {
             r: r.clamp(0.0, 1.0),
         }
     }
 }
 
-impl BxdfModel for DiffuseBxdf {
+impl<C: Colour> BxdfModel<C> for DiffuseBxdf<C> {
     fn flags(&self) -> BxdfFlags {
         if self.r.is_black() {
             BxdfFlags::UNSET
@@ -34,9 +34,9 @@ impl BxdfModel for DiffuseBxdf {
             BxdfFlags::DIFFUSE_REFLECTION
         }
     }
-    fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> Rgb {
+    fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> C {
         if !same_hemisphere(wo, wi) {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         self.r * FRAC_1_PI
     }
@@ -47,7 +47,7 @@ impl BxdfModel for DiffuseBxdf {
         u: [f32; 2],
         _mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         if !sample.reflection() {
             return None;
         }
@@ -76,16 +76,16 @@ impl BxdfModel for DiffuseBxdf {
 /// channel (the constructor clamps each to `[0, 1]` only; pbrt-v4 does not
 /// enforce the sum either).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DiffuseTransmissionBxdf {
+pub struct DiffuseTransmissionBxdf<C = Rgb> {
     /// Reflectance.
-    pub r: Rgb,
+    pub r: C,
     /// Transmittance.
-    pub t: Rgb,
+    pub t: C,
 }
 
-impl DiffuseTransmissionBxdf {
+impl<C: Colour> DiffuseTransmissionBxdf<C> {
     /// A diffuse reflector/transmitter (each channel clamped to `[0, 1]`).
-    pub fn new(r: Rgb, t: Rgb) -> Self {
+    pub fn new(r: C, t: C) -> Self {
         DiffuseTransmissionBxdf {
             r: r.clamp(0.0, 1.0),
             t: t.clamp(0.0, 1.0),
@@ -107,7 +107,7 @@ impl DiffuseTransmissionBxdf {
     }
 }
 
-impl BxdfModel for DiffuseTransmissionBxdf {
+impl<C: Colour> BxdfModel<C> for DiffuseTransmissionBxdf<C> {
     fn flags(&self) -> BxdfFlags {
         let mut f = BxdfFlags::UNSET;
         if !self.r.is_black() {
@@ -118,7 +118,7 @@ impl BxdfModel for DiffuseTransmissionBxdf {
         }
         f
     }
-    fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> Rgb {
+    fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> C {
         if same_hemisphere(wo, wi) {
             self.r * FRAC_1_PI
         } else {
@@ -132,7 +132,7 @@ impl BxdfModel for DiffuseTransmissionBxdf {
         u: [f32; 2],
         _mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         let (pr, pt) = self.lobe_probs(sample);
         if pr + pt == 0.0 {
             return None;

@@ -2,7 +2,7 @@
 //! Snell refraction, in pbrt-v4's conventions.
 
 use crate::math::Vec3;
-use crate::spectrum::Rgb;
+use crate::spectrum::Colour;
 
 /// Unpolarized Fresnel reflectance of a dielectric interface with relative
 /// index `eta` (inside over outside) for `cos_theta_i` measured from the
@@ -89,13 +89,9 @@ pub fn fr_complex(cos_theta_i: f32, eta: f32, k: f32) -> f32 {
     0.5 * (r_parl.norm() + r_perp.norm())
 }
 
-/// [`fr_complex`] per RGB channel.
-pub fn fr_complex_rgb(cos_theta_i: f32, eta: Rgb, k: Rgb) -> Rgb {
-    Rgb::new(
-        fr_complex(cos_theta_i, eta.r, k.r),
-        fr_complex(cos_theta_i, eta.g, k.g),
-        fr_complex(cos_theta_i, eta.b, k.b),
-    )
+/// [`fr_complex`] per lane (RGB channel or wavelength).
+pub fn fr_complex_colour<C: Colour>(cos_theta_i: f32, eta: C, k: C) -> C {
+    C::from_fn(|i| fr_complex(cos_theta_i, eta.lane(i), k.lane(i)))
 }
 
 /// Mirror reflection of `wo` about `n`: `-wo + 2 (wo·n) n`.

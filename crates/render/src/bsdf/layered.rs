@@ -24,10 +24,11 @@ use super::diffuse::DiffuseBxdf;
 use super::{BsdfSample, BxdfFlags, BxdfModel, SampleFlags, TransportMode, power_heuristic};
 use crate::math::Vec3;
 use crate::math::spherical::same_hemisphere;
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 use lowdisc::hash::hash_words;
 use lowdisc::pcg::Pcg32;
 use std::f32::consts::PI;
+use std::marker::PhantomData;
 
 /// A dielectric coating over a base BxDF `B`.
 #[derive(Clone, Debug, PartialEq)]
@@ -47,33 +48,33 @@ pub struct LayeredBxdf<B> {
 }
 
 /// A dielectric coating over a Lambertian base (pbrt-v4 `coateddiffuse`).
-pub type CoatedDiffuseBxdf = LayeredBxdf<DiffuseBxdf>;
+pub type CoatedDiffuseBxdf<C = Rgb> = LayeredBxdf<DiffuseBxdf<C>>;
 /// A dielectric coating over a conductor (pbrt-v4 `coatedconductor`).
-pub type CoatedConductorBxdf = LayeredBxdf<ConductorBxdf>;
+pub type CoatedConductorBxdf<C = Rgb> = LayeredBxdf<ConductorBxdf<C>>;
 
-/// One of the two interfaces of a layered BxDF.
-enum Iface<'a, B> {
+/// One of the two interfaces of a layered BxDF, seen with colour `C`.
+enum Iface<'a, B, C> {
     Top(&'a DielectricBxdf),
-    Bottom(&'a B),
+    Bottom(&'a B, PhantomData<C>),
 }
 
-impl<B: BxdfModel> Iface<'_, B> {
+impl<C: Colour, B: BxdfModel<C>> Iface<'_, B, C> {
     fn flags(&self) -> BxdfFlags {
         match self {
             Iface::Top(t) => t.flags(),
-            Iface::Bottom(b) => b.flags(),
+            Iface::Bottom(b, _) => b.flags(),
         }
     }
-    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb {
+    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> C {
         match self {
             Iface::Top(t) => t.f(wo, wi, mode),
-            Iface::Bottom(b) => b.f(wo, wi, mode),
+            Iface::Bottom(b, _) => b.f(wo, wi, mode),
         }
     }
     fn pdf(&self, wo: Vec3, wi: Vec3, mode: TransportMode, s: SampleFlags) -> f32 {
         match self {
             Iface::Top(t) => t.pdf(wo, wi, mode, s),
-            Iface::Bottom(b) => b.pdf(wo, wi, mode, s),
+            Iface::Bottom(b, _) => b.pdf(wo, wi, mode, s),
         }
     }
     /// Samples and keeps only usable samples (non-black, positive pdf, off
@@ -84,18 +85,18 @@ impl<B: BxdfModel> Iface<'_, B> {
         rng: &mut Pcg32,
         mode: TransportMode,
         s: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         let uc = rng.next_f32();
         let u = [rng.next_f32(), rng.next_f32()];
         let bs = match self {
             Iface::Top(t) => t.sample_f(wo, uc, u, mode, s),
-            Iface::Bottom(b) => b.sample_f(wo, uc, u, mode, s),
+            Iface::Bottom(b, _) => b.sample_f(wo, uc, u, mode, s),
         }?;
         usable(&bs).then_some(bs)
     }
 }
 
-fn usable(bs: &BsdfSample) -> bool {
+fn usable<C: Colour>(bs: &BsdfSample<C>) -> bool {
     !bs.f.is_black() && bs.pdf > 0.0 && bs.wi.z != 0.0
 }
 
@@ -118,7 +119,7 @@ fn hash_vec(seed: u64, w: Vec3) -> u64 {
     ])
 }
 
-impl<B: BxdfModel> LayeredBxdf<B> {
+impl<B> LayeredBxdf<B> {
     /// A layered BxDF; the thickness is kept positive, `max_depth` and
     /// `n_samples` at least 1.
     pub fn new(
@@ -145,14 +146,17 @@ impl<B: BxdfModel> LayeredBxdf<B> {
     }
 
     /// One random walk's estimate of `f` for `wo`, `wi` both above.
-    fn walk_f(&self, wo: Vec3, wi: Vec3, mode: TransportMode, rng: &mut Pcg32) -> Rgb {
-        let mut f = Rgb::ZERO;
+    fn walk_f<C: Colour>(&self, wo: Vec3, wi: Vec3, mode: TransportMode, rng: &mut Pcg32) -> C
+    where
+        B: BxdfModel<C>,
+    {
+        let mut f = C::ZERO;
         let th = self.thickness;
         // Entered through the top and leaving through it: the base is the
         // non-exit interface, the exit sits at z = thickness.
-        let enter = Iface::<B>::Top(&self.top);
+        let enter = Iface::<B, C>::Top(&self.top);
         let exit = &enter;
-        let non_exit = &Iface::Bottom(&self.bottom);
+        let non_exit = &Iface::Bottom(&self.bottom, PhantomData);
         let exit_z = th;
         let Some(wos) = enter.sample(wo, rng, mode, SampleFlags::Transmission) else {
             return f;
@@ -220,7 +224,7 @@ impl<B: BxdfModel> LayeredBxdf<B> {
     }
 }
 
-impl<B: BxdfModel> BxdfModel for LayeredBxdf<B> {
+impl<C: Colour, B: BxdfModel<C>> BxdfModel<C> for LayeredBxdf<B> {
     fn flags(&self) -> BxdfFlags {
         let (tf, bf) = (self.top.flags(), self.bottom.flags());
         let mut flags = BxdfFlags::REFLECTION;
@@ -238,14 +242,14 @@ impl<B: BxdfModel> BxdfModel for LayeredBxdf<B> {
         flags
     }
 
-    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb {
+    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> C {
         let (wo, wi) = if wo.z < 0.0 { (-wo, -wi) } else { (wo, wi) };
         // Opaque bases: nothing reaches the other side.
         if !same_hemisphere(wo, wi) {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         let n = self.n_samples as f32;
-        let mut f = self.top.f(wo, wi, mode) * n;
+        let mut f = BxdfModel::<C>::f(&self.top, wo, wi, mode) * n;
         let mut rng = Pcg32::new(hash_vec(self.seed, wo), hash_vec(0, wi));
         for _ in 0..self.n_samples {
             f += self.walk_f(wo, wi, mode, &mut rng);
@@ -260,7 +264,7 @@ impl<B: BxdfModel> BxdfModel for LayeredBxdf<B> {
         u: [f32; 2],
         mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         if !sample.reflection() {
             return None;
         }
@@ -306,7 +310,7 @@ impl<B: BxdfModel> BxdfModel for LayeredBxdf<B> {
             z = if z == th { 0.0 } else { th };
             f *= tr(th, w);
             let iface = if z == 0.0 {
-                Iface::Bottom(&self.bottom)
+                Iface::<B, C>::Bottom(&self.bottom, PhantomData)
             } else {
                 Iface::Top(&self.top)
             };
@@ -349,8 +353,8 @@ impl<B: BxdfModel> BxdfModel for LayeredBxdf<B> {
         let n = self.n_samples as f32;
         let mut rng = Pcg32::new(hash_vec(self.seed, wi), hash_vec(0, wo));
         let mut pdf_sum = n * self.top.pdf(wo, wi, mode, SampleFlags::Reflection);
-        let t = Iface::<B>::Top(&self.top);
-        let r = Iface::Bottom(&self.bottom);
+        let t = Iface::<B, C>::Top(&self.top);
+        let r = Iface::Bottom(&self.bottom, PhantomData);
         for _ in 0..self.n_samples {
             // The TRT term: through the top, off the base, back out.
             let wos = t.sample(wo, &mut rng, mode, SampleFlags::Transmission);

@@ -16,6 +16,7 @@
 //! [`crate::texture`]). Adding a material means adding a variant here and its
 //! arm in [`Material::bxdf_at`].
 
+mod defaults;
 mod mix;
 mod params;
 
@@ -25,7 +26,7 @@ use super::diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 use super::layered::LayeredBxdf;
 use super::{Bsdf, Bxdf, BxdfModel};
 use crate::math::{Point2, Point3, Vec3};
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
 pub use mix::{MixMaterial, mix_choice};
 pub use params::{ConductorSpec, Roughness};
@@ -173,74 +174,6 @@ impl Material {
         }
     }
 
-    /// The material pbrt-v4 builds for `type_name` when no parameter is given.
-    pub fn pbrt_default(type_name: &str) -> Result<Material, MaterialError> {
-        let copper = ConductorSpec::named("Cu")?;
-        let smooth = || Roughness::SMOOTH.into();
-        Ok(match type_name {
-            "diffuse" => Material::diffuse(Rgb::splat(0.5)),
-            "conductor" => Material::Conductor {
-                spec: copper.into(),
-                roughness: smooth(),
-            },
-            "dielectric" => Material::Dielectric {
-                eta: 1.5,
-                roughness: smooth(),
-            },
-            "thindielectric" => Material::ThinDielectric { eta: 1.5 },
-            "diffusetransmission" => Material::DiffuseTransmission {
-                reflectance: Rgb::splat(0.25).into(),
-                transmittance: Rgb::splat(0.25).into(),
-                scale: 1.0,
-            },
-            "coateddiffuse" => Material::CoatedDiffuse {
-                reflectance: Rgb::splat(0.5).into(),
-                roughness: smooth(),
-                thickness: 0.01.into(),
-                eta: 1.5,
-                max_depth: 10,
-                n_samples: 1,
-            },
-            "coatedconductor" => Material::CoatedConductor {
-                interface_roughness: smooth(),
-                interface_eta: 1.5,
-                thickness: 0.01.into(),
-                conductor: copper.into(),
-                conductor_roughness: smooth(),
-                max_depth: 10,
-                n_samples: 1,
-            },
-            other => return Err(MaterialError::UnknownType(other.to_string())),
-        })
-    }
-
-    /// The stand-in for pbrt-v4's `measured` material (tabulated RGL BRDFs
-    /// are not supported). Chosen from the file name: names containing
-    /// "metal" become a rough aluminium conductor (alpha 0.2); otherwise a
-    /// Lambertian surface whose reflectance follows a colour word in the
-    /// name ("white" 0.8, "gray"/"grey" 0.18, "blue" (0.1, 0.15, 0.5)) or 0.5.
-    pub fn measured_fallback(filename: &str) -> Material {
-        let name = filename.to_ascii_lowercase();
-        if name.contains("metal")
-            && let Ok(spec) = ConductorSpec::named("Al")
-        {
-            return Material::Conductor {
-                spec: spec.into(),
-                roughness: Roughness::isotropic(0.2, false).into(),
-            };
-        }
-        let reflectance = if name.contains("white") {
-            Rgb::splat(0.8)
-        } else if name.contains("gray") || name.contains("grey") {
-            Rgb::splat(0.18)
-        } else if name.contains("blue") {
-            Rgb::new(0.1, 0.15, 0.5)
-        } else {
-            Rgb::splat(0.5)
-        };
-        Material::diffuse(reflectance)
-    }
-
     /// The local-frame BxDF at [`BsdfContext::at_origin`] (`seed` drives the
     /// layered random walks): textures are evaluated at `uv = (0, 0)`,
     /// `p = 0`, and a mix takes the choice made there for `wo = +z`; shading
@@ -250,23 +183,35 @@ impl Material {
     }
 
     /// The world-space BSDF at a shading point, with textures evaluated at
-    /// `ctx.uv` / `ctx.p`.
+    /// `ctx.uv` / `ctx.p` (RGB mode).
     pub fn bsdf(&self, ctx: &BsdfContext) -> Bsdf {
-        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_at(ctx))
+        self.bsdf_for(ctx, &())
+    }
+
+    /// [`Material::bsdf`] in colour `C` at wavelengths `w` (RGB parameters
+    /// uplifted as [`Colour`]'s constructors say).
+    pub fn bsdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bsdf<C> {
+        Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_for(ctx, w))
     }
 
     /// The local-frame BxDF at a shading point (textures evaluated there).
     pub fn bxdf_at(&self, ctx: &BsdfContext) -> Bxdf {
+        self.bxdf_for(ctx, &())
+    }
+
+    /// [`Material::bxdf_at`] in colour `C` at wavelengths `w`.
+    pub fn bxdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bxdf<C> {
         let fix_eta = |e: f32| if e > 0.0 && e.is_finite() { e } else { 1.0 };
         let tc = ctx.texture_context();
         let seed = ctx.seed;
+        let albedo = |t: &SpectrumTexture| C::albedo(t.evaluate(&tc), w);
         match self {
-            Material::Mix(m) => m.choose(ctx).bxdf_at(ctx),
+            Material::Mix(m) => m.choose(ctx).bxdf_for(ctx, w),
             Material::Diffuse { reflectance } => {
-                Bxdf::Diffuse(DiffuseBxdf::new(reflectance.evaluate(&tc)))
+                Bxdf::Diffuse(DiffuseBxdf::new(albedo(reflectance)))
             }
             Material::Conductor { spec, roughness } => {
-                let (eta, k) = spec.evaluate(&tc).eta_k();
+                let (eta, k) = spec.evaluate(&tc).eta_k_for(w);
                 let distribution = roughness.evaluate(&tc).distribution();
                 Bxdf::Conductor(ConductorBxdf::new(distribution, eta, k))
             }
@@ -282,8 +227,8 @@ impl Material {
                 transmittance,
                 scale,
             } => Bxdf::DiffuseTransmission(DiffuseTransmissionBxdf::new(
-                reflectance.evaluate(&tc) * *scale,
-                transmittance.evaluate(&tc) * *scale,
+                albedo(reflectance) * *scale,
+                albedo(transmittance) * *scale,
             )),
             Material::CoatedDiffuse {
                 reflectance,
@@ -294,7 +239,7 @@ impl Material {
                 n_samples,
             } => Bxdf::CoatedDiffuse(LayeredBxdf::new(
                 DielectricBxdf::new(fix_eta(*eta), roughness.evaluate(&tc).distribution()),
-                DiffuseBxdf::new(reflectance.evaluate(&tc)),
+                DiffuseBxdf::new(albedo(reflectance)),
                 thickness.evaluate(&tc),
                 *max_depth,
                 *n_samples,
@@ -312,7 +257,7 @@ impl Material {
                 let ieta = fix_eta(*interface_eta);
                 // As pbrt-v4: the conductor sits under the coating, so its
                 // index is relative to the coating's.
-                let (eta, k) = conductor.evaluate(&tc).eta_k();
+                let (eta, k): (C, C) = conductor.evaluate(&tc).eta_k_for(w);
                 let distribution = conductor_roughness.evaluate(&tc).distribution();
                 let base = ConductorBxdf::new(distribution, eta / ieta, k / ieta);
                 Bxdf::CoatedConductor(LayeredBxdf::new(
@@ -335,6 +280,7 @@ impl Material {
         let spec = |s: &ConductorSpec<SpectrumTexture>| match s {
             ConductorSpec::EtaK { eta, k } => rgb(eta) && rgb(k),
             ConductorSpec::Reflectance(r) => rgb(r),
+            ConductorSpec::Named { .. } => true,
         };
         self.roughness_is_constant()
             && match self {

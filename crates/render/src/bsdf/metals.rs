@@ -60,7 +60,7 @@ pub fn named_glass_eta(name: &str) -> Option<f32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bsdf::fresnel::fr_complex_rgb;
+    use crate::bsdf::fresnel::fr_complex_colour;
     use crate::spectrum::spectrum_file_to_rgb;
 
     #[test]
@@ -88,7 +88,7 @@ mod tests {
         let refl = |m: &str| {
             let eta = named_spectrum_rgb(&format!("metal-{m}-eta")).unwrap();
             let k = named_spectrum_rgb(&format!("metal-{m}-k")).unwrap();
-            fr_complex_rgb(1.0, eta, k)
+            fr_complex_colour(1.0, eta, k)
         };
         let (au, ag, al, cu) = (refl("Au"), refl("Ag"), refl("Al"), refl("Cu"));
         // Gold and copper are red-yellow (red > blue); silver and aluminium

@@ -1,4 +1,6 @@
-//! Scattering functions (BSDFs) in pbrt-v4's conventions, RGB valued.
+//! Scattering functions (BSDFs) in pbrt-v4's conventions, generic over the
+//! [`Colour`] they carry: RGB, or four sampled wavelengths in spectral mode
+//! (no BxDF here is dispersive, so all wavelengths scatter alike).
 //!
 //! Every BxDF works in a local shading frame with the normal along `+z`;
 //! `wo` (towards the viewer) and `wi` (towards the light) both point away
@@ -36,7 +38,7 @@ pub use microfacet::TrowbridgeReitz;
 pub use world::Bsdf;
 
 use crate::math::Vec3;
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 use std::ops::BitOr;
 
 /// Lobe flags of a BxDF or of one sample (pbrt-v4's `BxDFFlags`).
@@ -162,9 +164,9 @@ impl TransportMode {
 
 /// One sampled scattering direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BsdfSample {
+pub struct BsdfSample<C = Rgb> {
     /// BSDF value for (`wo`, `wi`) (for delta lobes: weight / `|cos θi|`).
-    pub f: Rgb,
+    pub f: C,
     /// Sampled incident direction (local or world, as the caller's space).
     pub wi: Vec3,
     /// Solid-angle density of `wi` (for delta lobes: the lobe probability).
@@ -179,10 +181,10 @@ pub struct BsdfSample {
     pub pdf_is_proportional: bool,
 }
 
-impl BsdfSample {
+impl<C> BsdfSample<C> {
     /// A sample with `eta = 1` and an exact pdf.
     #[inline]
-    pub fn new(f: Rgb, wi: Vec3, pdf: f32, flags: BxdfFlags) -> Self {
+    pub fn new(f: C, wi: Vec3, pdf: f32, flags: BxdfFlags) -> Self {
         BsdfSample {
             f,
             wi,
@@ -210,11 +212,11 @@ impl BsdfSample {
 }
 
 /// The interface every local-frame BxDF implements.
-pub trait BxdfModel {
+pub trait BxdfModel<C: Colour = Rgb> {
     /// The lobes present.
     fn flags(&self) -> BxdfFlags;
     /// `f(wo, wi)` (zero for delta lobes).
-    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb;
+    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> C;
     /// Samples `wi` given `wo`, a lobe-choice number `uc` and a 2D sample `u`
     /// (all in `[0,1)`), restricted to `sample` hemispheres.
     fn sample_f(
@@ -224,7 +226,7 @@ pub trait BxdfModel {
         u: [f32; 2],
         mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample>;
+    ) -> Option<BsdfSample<C>>;
     /// Solid-angle density with which `sample_f` (restricted to `sample`)
     /// returns `wi` (zero for delta lobes).
     fn pdf(&self, wo: Vec3, wi: Vec3, mode: TransportMode, sample: SampleFlags) -> f32;
@@ -234,21 +236,21 @@ pub trait BxdfModel {
 
 /// Any of the BxDFs, dispatched by `match` (no allocation).
 #[derive(Clone, Debug)]
-pub enum Bxdf {
+pub enum Bxdf<C = Rgb> {
     /// Lambertian reflection.
-    Diffuse(DiffuseBxdf),
+    Diffuse(DiffuseBxdf<C>),
     /// Lambertian reflection plus Lambertian transmission.
-    DiffuseTransmission(DiffuseTransmissionBxdf),
+    DiffuseTransmission(DiffuseTransmissionBxdf<C>),
     /// GGX conductor.
-    Conductor(ConductorBxdf),
+    Conductor(ConductorBxdf<C>),
     /// Smooth or rough dielectric.
     Dielectric(DielectricBxdf),
     /// Thin dielectric sheet.
     ThinDielectric(ThinDielectricBxdf),
     /// Dielectric coating over a diffuse base.
-    CoatedDiffuse(CoatedDiffuseBxdf),
+    CoatedDiffuse(CoatedDiffuseBxdf<C>),
     /// Dielectric coating over a conductor base.
-    CoatedConductor(CoatedConductorBxdf),
+    CoatedConductor(CoatedConductorBxdf<C>),
 }
 
 macro_rules! dispatch {
@@ -265,11 +267,11 @@ macro_rules! dispatch {
     };
 }
 
-impl BxdfModel for Bxdf {
+impl<C: Colour> BxdfModel<C> for Bxdf<C> {
     fn flags(&self) -> BxdfFlags {
-        dispatch!(self, b => b.flags())
+        dispatch!(self, b => BxdfModel::<C>::flags(b))
     }
-    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb {
+    fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> C {
         dispatch!(self, b => b.f(wo, wi, mode))
     }
     fn sample_f(
@@ -279,14 +281,14 @@ impl BxdfModel for Bxdf {
         u: [f32; 2],
         mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         dispatch!(self, b => b.sample_f(wo, uc, u, mode, sample))
     }
     fn pdf(&self, wo: Vec3, wi: Vec3, mode: TransportMode, sample: SampleFlags) -> f32 {
-        dispatch!(self, b => b.pdf(wo, wi, mode, sample))
+        dispatch!(self, b => BxdfModel::<C>::pdf(b, wo, wi, mode, sample))
     }
     fn regularize(&mut self) {
-        dispatch!(self, b => b.regularize())
+        dispatch!(self, b => BxdfModel::<C>::regularize(b))
     }
 }
 

@@ -3,21 +3,21 @@
 
 use super::{BsdfSample, Bxdf, BxdfFlags, BxdfModel, SampleFlags, TransportMode};
 use crate::math::{Frame, Vec3};
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 
 /// A BxDF placed at a surface point: world-space `f`, `sample_f`, `pdf`.
 #[derive(Clone, Debug)]
-pub struct Bsdf {
+pub struct Bsdf<C = Rgb> {
     /// The local scattering model.
-    pub bxdf: Bxdf,
+    pub bxdf: Bxdf<C>,
     /// Shading frame: `z` is the shading normal, `x` follows `dpdu`.
     pub frame: Frame,
 }
 
-impl Bsdf {
+impl<C: Colour> Bsdf<C> {
     /// A BSDF with shading normal `ns` (need not be unit) and tangent
     /// `dpdus` (projected onto the tangent plane; any vector if unknown).
-    pub fn new(ns: Vec3, dpdus: Vec3, bxdf: Bxdf) -> Bsdf {
+    pub fn new(ns: Vec3, dpdus: Vec3, bxdf: Bxdf<C>) -> Bsdf<C> {
         let n = ns.normalize();
         let frame = if n.is_finite() {
             Frame::from_zx(n, dpdus)
@@ -27,7 +27,7 @@ impl Bsdf {
         Bsdf { bxdf, frame }
     }
     /// A BSDF in an explicit frame.
-    pub fn with_frame(frame: Frame, bxdf: Bxdf) -> Bsdf {
+    pub fn with_frame(frame: Frame, bxdf: Bxdf<C>) -> Bsdf<C> {
         Bsdf { bxdf, frame }
     }
     /// World to local.
@@ -46,10 +46,10 @@ impl Bsdf {
         self.bxdf.flags()
     }
     /// `f(wo, wi)` for world directions (zero when `wo` is in the tangent plane).
-    pub fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> Rgb {
+    pub fn f(&self, wo: Vec3, wi: Vec3, mode: TransportMode) -> C {
         let (wo, wi) = (self.to_local(wo), self.to_local(wi));
         if wo.z == 0.0 {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         self.bxdf.f(wo, wi, mode)
     }
@@ -61,7 +61,7 @@ impl Bsdf {
         u_lobe: f32,
         u: [f32; 2],
         mode: TransportMode,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         self.sample_f_restricted(wo, u_lobe, u, mode, SampleFlags::All)
     }
     /// [`Bsdf::sample_f`] restricted to reflection or transmission.
@@ -72,7 +72,7 @@ impl Bsdf {
         u: [f32; 2],
         mode: TransportMode,
         sample: SampleFlags,
-    ) -> Option<BsdfSample> {
+    ) -> Option<BsdfSample<C>> {
         let wo = self.to_local(wo);
         let flags = self.bxdf.flags();
         let allowed = (sample.reflection() && flags.is_reflective())

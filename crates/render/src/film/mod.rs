@@ -88,6 +88,9 @@ pub struct FilmParams {
     pub exposure_time: f32,
     /// `maxcomponentvalue` (default infinite: no clamping).
     pub max_component_value: f32,
+    /// `whitebalance`: 0 (the default) for none, otherwise the colour
+    /// temperature (K) adapted to the output's white; spectral mode only.
+    pub white_balance: f32,
     /// `filename` (default `pbrt.exr`).
     pub filename: String,
 }
@@ -101,6 +104,7 @@ impl Default for FilmParams {
             iso: 100.0,
             exposure_time: 1.0,
             max_component_value: f32::INFINITY,
+            white_balance: 0.0,
             filename: "pbrt.exr".to_string(),
         }
     }
@@ -226,6 +230,8 @@ pub struct Film {
     full_resolution: [u32; 2],
     filename: String,
     acc: Accumulator,
+    /// Spectral mode: the matrix from the accumulated sensor XYZ to sRGB.
+    output_from_sensor: Option<[[f32; 3]; 3]>,
 }
 
 impl Film {
@@ -296,6 +302,7 @@ impl Film {
             full_resolution: params.resolution,
             filename: params.filename.clone(),
             acc: Accumulator::new(bounds, ratio, params.max_component_value),
+            output_from_sensor: None,
         })
     }
 
@@ -363,13 +370,28 @@ impl Film {
     pub fn pixel_rgb(&self, pixel: [i32; 2]) -> Option<Rgb> {
         self.acc
             .index(pixel)
-            .map(|i| Rgb::from_array(self.acc.value(i)))
+            .map(|i| Rgb::from_array(self.value(i)))
+    }
+
+    /// Spectral mode: samples are the sensor's XYZ and pixels are `m · XYZ`
+    /// (`None`, the default: samples are the output RGB).
+    pub fn set_output_from_sensor(&mut self, m: Option<[[f32; 3]; 3]>) {
+        self.output_from_sensor = m;
+    }
+
+    /// Pixel `i`'s output value.
+    fn value(&self, i: usize) -> [f32; 3] {
+        let v = self.acc.value(i);
+        match &self.output_from_sensor {
+            None => v,
+            Some(m) => m.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2]),
+        }
     }
 
     /// The image of the pixel bounds (its top-left pixel is `pixel_bounds().min`).
     pub fn to_image(&self) -> Result<RgbImage, FilmError> {
         let b = self.acc.bounds;
-        let pixels = (0..b.area()).map(|i| self.acc.value(i)).collect();
+        let pixels = (0..b.area()).map(|i| self.value(i)).collect();
         Ok(RgbImage::from_pixels(b.width(), b.height(), pixels)?)
     }
 

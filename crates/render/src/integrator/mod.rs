@@ -1,9 +1,11 @@
 //! Unidirectional path tracing with next-event estimation and multiple
-//! importance sampling (pbrt-v4's `PathIntegrator`), in RGB.
+//! importance sampling (pbrt-v4's `PathIntegrator`), in RGB or spectrally.
 //!
-//! **RGB rendering.** Radiance, reflectance and emission are linear RGB
-//! triples ([`Rgb`](crate::spectrum::Rgb)); there is no spectral sampling. Spectral inputs are
-//! reduced to RGB when the scene is built.
+//! **Colour.** The path is generic over its [`Colour`](crate::spectrum::Colour):
+//! RGB triples (the default) or, in spectral mode, the four wavelengths of
+//! the camera sample ([`PathIntegrator::li_for`]); materials and emission
+//! are turned into that colour at each vertex (see [`crate::spectrum`]).
+//! Russian roulette looks at the largest lane of either.
 //!
 //! **Estimator.** At every non-specular vertex one light is chosen in
 //! proportion to its power and sampled (next-event estimation, with a shadow
@@ -30,6 +32,9 @@
 //!
 //! **Sampler dimensions, in order** (so the sampler's quality shows in the
 //! image; every pixel sample consumes them in exactly this order):
+//! 0. spectral mode only: the wavelength sample, `get_1d` (dimension 0, as
+//!    pbrt-v4 draws it before the camera sample); every dimension below
+//!    is then one higher (lens 1-2, bounce `k` from `3 + 7k`);
 //! 1. the film position: `get_pixel_2d` (the sampler's reserved pixel
 //!    dimensions, importance-sampling the pixel filter);
 //! 2. the lens: `get_2d` (dimensions 0-1, drawn even for a pinhole);

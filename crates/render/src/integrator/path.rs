@@ -6,7 +6,7 @@ use crate::bsdf::{Bsdf, TransportMode, power_heuristic};
 use crate::light::LightSampleContext;
 use crate::math::{Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
 use crate::scene::Scene;
-use crate::spectrum::Rgb;
+use crate::spectrum::{Colour, Rgb};
 use lowdisc::pixel::PixelSampler;
 
 /// The sample values one scattering vertex uses, drawn in the documented order.
@@ -41,17 +41,32 @@ impl PathIntegrator {
     /// every random number from `sampler` (whose pixel sample has been
     /// started and whose pixel and lens dimensions have been consumed).
     /// `bsdf_seed` seeds the stochastic (layered) BSDFs' random walks (the
-    /// render passes its sampler seed).
+    /// render passes its sampler seed). RGB mode; see [`PathIntegrator::li_for`].
     pub fn li<S: PixelSampler>(
+        &self,
+        scene: &Scene,
+        ray: Ray,
+        sampler: &mut S,
+        bsdf_seed: u64,
+        stats: &mut PathStats,
+    ) -> Rgb {
+        self.li_for(scene, ray, sampler, bsdf_seed, &(), stats)
+    }
+
+    /// [`PathIntegrator::li`] in colour `C` at wavelengths `w` (spectral
+    /// mode: `C` = [`SampledSpectrum`](crate::spectrum::SampledSpectrum));
+    /// emission and reflectances are made `C` by [`Colour`]'s constructors.
+    pub fn li_for<S: PixelSampler, C: Colour>(
         &self,
         scene: &Scene,
         mut ray: Ray,
         sampler: &mut S,
         bsdf_seed: u64,
+        w: &C::Wavelengths,
         stats: &mut PathStats,
-    ) -> Rgb {
-        let mut l = Rgb::ZERO;
-        let mut beta = Rgb::ONE;
+    ) -> C {
+        let mut l = C::ZERO;
+        let mut beta = C::ONE;
         let mut depth = 0u32;
         let mut specular_bounce = false;
         let mut eta_scale = 1.0f32;
@@ -68,9 +83,10 @@ impl PathIntegrator {
                     if le.is_black() {
                         continue;
                     }
+                    let le = C::emission(le, scene.light_spectrum(i), w);
                     let p_l = || scene.light_sampler().pmf(i) * light.pdf_li(&prev_ctx, ray.d);
-                    if let Some(w) = self.emission_weight(depth, specular_bounce, p_b, p_l) {
-                        l += beta * le * w;
+                    if let Some(mis) = self.emission_weight(depth, specular_bounce, p_b, p_l) {
+                        l += beta * le * mis;
                     }
                 }
                 break;
@@ -81,12 +97,13 @@ impl PathIntegrator {
                 let light = &lights[li as usize];
                 let le = light.l(surf.p, surf.ng, surf.uv, wo);
                 if !le.is_black() {
+                    let le = C::emission(le, scene.light_spectrum(li as usize), w);
                     let p_l = || {
                         scene.light_sampler().pmf(li as usize)
                             * light.pdf_li_hit(&prev_ctx, surf.p, surf.ng)
                     };
-                    if let Some(w) = self.emission_weight(depth, specular_bounce, p_b, p_l) {
-                        l += beta * le * w;
+                    if let Some(mis) = self.emission_weight(depth, specular_bounce, p_b, p_l) {
+                        l += beta * le * mis;
                     }
                 }
             }
@@ -96,18 +113,21 @@ impl PathIntegrator {
             depth += 1;
             let u = VertexSamples::draw(sampler);
             let material = &scene.materials()[sh.material as usize];
-            let bsdf = material.bsdf(&BsdfContext {
-                ns: surf.ns,
-                dpdus: surf.dpdu,
-                seed: bsdf_seed,
-                p: surf.p,
-                uv: surf.uv,
-                wo,
-            });
+            let bsdf = material.bsdf_for::<C>(
+                &BsdfContext {
+                    ns: surf.ns,
+                    dpdus: surf.dpdu,
+                    seed: bsdf_seed,
+                    p: surf.p,
+                    uv: surf.uv,
+                    wo,
+                },
+                w,
+            );
             let flags = bsdf.flags();
             let ctx = LightSampleContext::new(surf.p, surf.ng, surf.ns);
             if flags.is_non_specular() && self.strategy != LightStrategy::BsdfOnly {
-                let ld = self.sample_ld(scene, &bsdf, &ctx, wo, &u, stats);
+                let ld = self.sample_ld(scene, &bsdf, &ctx, wo, &u, w, stats);
                 l += beta * ld;
             }
             let Some(bs) = bsdf.sample_f(wo, u.lobe, u.bsdf, TransportMode::Radiance) else {
@@ -163,36 +183,39 @@ impl PathIntegrator {
 
     /// Next-event estimation: one light chosen by power, one sample of it,
     /// a shadow ray, weighted against BSDF sampling by the power heuristic.
-    fn sample_ld(
+    #[allow(clippy::too_many_arguments)]
+    fn sample_ld<C: Colour>(
         &self,
         scene: &Scene,
-        bsdf: &Bsdf,
+        bsdf: &Bsdf<C>,
         ctx: &LightSampleContext,
         wo: Vec3,
         u: &VertexSamples,
+        w: &C::Wavelengths,
         stats: &mut PathStats,
-    ) -> Rgb {
+    ) -> C {
         let Some((index, pmf)) = scene.light_sampler().sample(u.light_choice) else {
-            return Rgb::ZERO;
+            return C::ZERO;
         };
         let light = &scene.lights()[index];
         let Some(ls) = light.sample_li(ctx, u.light) else {
-            return Rgb::ZERO;
+            return C::ZERO;
         };
+        let le = C::emission(ls.l, scene.light_spectrum(index), w);
         let f = bsdf.f(wo, ls.wi, TransportMode::Radiance) * ls.wi.abs_dot(ctx.ns);
         if f.is_black() || !(pmf > 0.0) {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         stats.rays += 1;
         let target = offset_ray_origin(ls.p_light, ls.n_light, ctx.p - ls.p_light);
         if scene.intersect_p(&spawn_ray_to(ctx.p, ctx.n, target), 1.0 - SHADOW_EPSILON) {
-            return Rgb::ZERO;
+            return C::ZERO;
         }
         let p_l = pmf * ls.pdf;
         if ls.is_delta || self.strategy == LightStrategy::LightOnly {
-            return f * ls.l / p_l;
+            return f * le / p_l;
         }
         let p_b = bsdf.pdf(wo, ls.wi, TransportMode::Radiance);
-        f * ls.l * (power_heuristic(p_l, p_b) / p_l)
+        f * le * (power_heuristic(p_l, p_b) / p_l)
     }
 }

@@ -7,8 +7,11 @@ use crate::light::{
     DistantLight, EnvLookup, ImageInfiniteLight, Light, PointLight, SpotLight, UniformInfiniteLight,
 };
 use crate::math::{Point3, Vec3};
-use crate::spectrum::Rgb;
+use crate::spectrum::named::{EmissionSpectrum, blackbody, named_metal, sampled_emission};
+use crate::spectrum::{Rgb, parse_spectrum_text};
+use pbrt_format::SpectrumValue;
 use pbrt_format::{Loc, ParamSet, ParseError};
+use std::sync::Arc;
 
 fn point(ps: &ParamSet, name: &str, d: [f32; 3]) -> Point3 {
     ps.get_point3(name)
@@ -24,6 +27,34 @@ impl PbrtLoader {
             Some(v) => self.spectrum_value(v, true, loc),
             None => Ok(Rgb::ONE),
         }
+    }
+
+    /// The emission spectrum (spectral mode) of a light's spectrum
+    /// parameter when it is not RGB: a blackbody, inline samples, or a file
+    /// (`None` for RGB, absent or unreadable values; `light_rgb` reports
+    /// the errors).
+    fn light_spectrum(&self, ps: &ParamSet, name: &str) -> Option<EmissionSpectrum> {
+        let t = match ps.get_spectrum(name)? {
+            SpectrumValue::Rgb(_) => return None,
+            SpectrumValue::Blackbody(t) => blackbody(t)?,
+            SpectrumValue::Samples(s) => {
+                let pairs: Vec<(f32, f32)> = s
+                    .chunks_exact(2)
+                    .map(|c| (c[0] as f32, c[1] as f32))
+                    .collect();
+                sampled_emission(&pairs)?
+            }
+            SpectrumValue::Named(n) => {
+                if named_metal(n).is_some() {
+                    return None;
+                }
+                let path = self.resolve(n);
+                let bytes = lowdisc_files::read_input(&path).ok()?;
+                let text = String::from_utf8(bytes).ok()?;
+                sampled_emission(&parse_spectrum_text(&text, &path).ok()?)?
+            }
+        };
+        Some(Arc::new(t))
     }
 
     fn positive(ps: &ParamSet, name: &str) -> Option<f32> {
@@ -131,7 +162,17 @@ impl PbrtLoader {
             }
         };
         ps.warn_unused(&format!("LightSource \"{ty}\""), &mut self.warnings);
+        let spectrum = self.light_spectrum(
+            ps,
+            if ty == "point" || ty == "spot" {
+                "I"
+            } else {
+                "L"
+            },
+        );
+        self.builder.set_emission_spectrum(spectrum);
         self.builder.add_light(light);
+        self.builder.set_emission_spectrum(None);
         self.counts.lights += 1;
         Ok(())
     }
@@ -165,6 +206,7 @@ impl PbrtLoader {
             l: l * scale,
             two_sided: ps.bool_or("twosided", false),
             power: Self::positive(ps, "power"),
+            spectrum: self.light_spectrum(ps, "L"),
         };
         ps.warn_unused("AreaLightSource \"diffuse\"", &mut self.warnings);
         self.state.cur.area = Some(spec);

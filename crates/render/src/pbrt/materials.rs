@@ -9,20 +9,12 @@ use super::loader::PbrtLoader;
 use super::state::MatRef;
 use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};
 use crate::bsdf::{ConductorSpec, Material, MixMaterial, Roughness};
+use crate::spectrum::named::{NamedSpectrum, intern_measured, named_metal, planck};
 use crate::spectrum::{Rgb, spectrum_file_to_rgb, spectrum_samples_to_rgb};
 use crate::texture::{FloatTexture, SpectrumTexture, Texture, TextureEvalContext};
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, SpectrumOrTexture, SpectrumValue};
 use std::path::Path;
 use std::sync::Arc;
-
-/// Planck's law at `lambda_nm` for temperature `t` kelvin (relative units).
-fn planck(lambda_nm: f64, t: f64) -> f64 {
-    const C: f64 = 299_792_458.0;
-    const H: f64 = 6.626_070_15e-34;
-    const KB: f64 = 1.380_649e-23;
-    let l = lambda_nm * 1e-9;
-    2.0 * H * C * C / (l.powi(5) * ((H * C / (l * KB * t)).exp() - 1.0))
-}
 
 /// A blackbody's colour, normalised to luminance 1.
 pub(super) fn blackbody_rgb(t: f64) -> Option<Rgb> {
@@ -182,9 +174,43 @@ impl PbrtLoader {
             return Ok(ConductorSpec::Reflectance(r));
         }
         let cu = |w: &str| named_spectrum_rgb(&format!("metal-Cu-{w}")).unwrap_or(Rgb::ONE);
-        let eta = self.rgb_tex(ps, &format!("{prefix}eta"), cu("eta"), loc)?;
-        let k = self.rgb_tex(ps, &format!("{prefix}k"), cu("k"), loc)?;
-        Ok(ConductorSpec::EtaK { eta, k })
+        let (eta_name, k_name) = (format!("{prefix}eta"), format!("{prefix}k"));
+        // Measured spectra (named metals, the default copper, files or
+        // inline samples) for both: the spectra themselves.
+        let spectra = (
+            self.measured(ps, &eta_name, "eta"),
+            self.measured(ps, &k_name, "k"),
+        );
+        let eta = self.rgb_tex(ps, &eta_name, cu("eta"), loc)?;
+        let k = self.rgb_tex(ps, &k_name, cu("k"), loc)?;
+        Ok(match spectra {
+            (Some(eta), Some(k)) => ConductorSpec::Named { eta, k },
+            _ => ConductorSpec::EtaK { eta, k },
+        })
+    }
+
+    /// A conductor's `eta` or `k` parameter as a measured spectrum, when it
+    /// is one: a named metal, a `.spd` file or inline samples (`None` for
+    /// RGB, textures and unreadable files, which `rgb_tex` reports).
+    fn measured(&self, ps: &ParamSet, name: &str, which: &str) -> Option<&'static NamedSpectrum> {
+        let samples = match ps.get_spectrum_or_texture(name) {
+            None => return named_metal(&format!("metal-Cu-{which}")),
+            Some(SpectrumOrTexture::Value(SpectrumValue::Named(n))) => {
+                if let Some(m) = named_metal(n) {
+                    return Some(m);
+                }
+                let path = self.resolve(n);
+                let text = String::from_utf8(lowdisc_files::read_input(&path).ok()?).ok()?;
+                crate::spectrum::parse_spectrum_text(&text, &path).ok()?
+            }
+            Some(SpectrumOrTexture::Value(SpectrumValue::Samples(s))) => s
+                .chunks_exact(2)
+                .map(|c| (c[0] as f32, c[1] as f32))
+                .collect(),
+            Some(_) => return None,
+        };
+        let rgb = spectrum_samples_to_rgb(&samples, Path::new(name)).ok()?;
+        Some(intern_measured(name, &samples, rgb))
     }
 
     fn build_material(

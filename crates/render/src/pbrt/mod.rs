@@ -12,7 +12,12 @@
 //!   bilinear image lookups; bump, normal and displacement maps are ignored;
 //! * `measured` materials use [`Material::measured_fallback`];
 //! * `interface` shapes (medium boundaries) are skipped, media are ignored;
-//! * spectra (named, sampled, files, blackbody) are reduced to RGB;
+//! * spectra (named, sampled, files, blackbody) are reduced to RGB for RGB
+//!   mode; spectral mode evaluates conductors' measured `eta`/`k` and
+//!   lights' blackbody, sampled and file spectra as spectra (other spectral
+//!   parameters, e.g. a reflectance given as a spectrum, use their RGB,
+//!   uplifted), and named glasses keep one index of refraction (no
+//!   dispersion);
 //! * `bdpt`, `sppm`, `lightpath`, ... integrators render with the path tracer.
 //!
 //! Relative file names are resolved against the directory of the main scene

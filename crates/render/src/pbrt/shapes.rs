@@ -221,6 +221,8 @@ impl PbrtLoader {
         if emission.is_some() {
             self.counts.area_shapes += 1;
         }
+        self.builder
+            .set_emission_spectrum(area.and_then(|a| a.spectrum.clone()));
         match built {
             Built::Mesh(m) => {
                 self.counts.triangles += m.len();
@@ -235,6 +237,7 @@ impl PbrtLoader {
                 self.builder.add_disk(d, material, emission);
             }
         }
+        self.builder.set_emission_spectrum(None);
         Ok(())
     }
 }

@@ -27,6 +27,8 @@ pub(crate) struct AreaSpec {
     pub two_sided: bool,
     /// `power`, if given.
     pub power: Option<f32>,
+    /// The emission spectrum when `L` is not RGB (spectral mode).
+    pub spectrum: Option<crate::spectrum::named::EmissionSpectrum>,
 }
 
 /// The attributes saved by `AttributeBegin`.

@@ -20,6 +20,14 @@
 //! range are added in index order from 0, so merging ranges adds per-range
 //! sums: equal to the whole render's up to `f64` rounding (not bit for bit).
 //!
+//! **Spectral mode** ([`RenderOptions::spectral`]): each camera sample
+//! draws one more dimension, the wavelength sample, first (dimension 0, as
+//! pbrt-v4's `Get1D` before `GetCameraSample`), so the lens takes dimensions
+//! 1-2 and bounce `k` starts at `3 + 7k`; the radiance at the four
+//! wavelengths goes to the film as the sensor's XYZ, which the film turns
+//! into sRGB ([`crate::spectrum::sensor`]). RGB mode draws no wavelength
+//! dimension (lens 0-1, bounce `k` at `2 + 7k`).
+//!
 //! **Non-finite samples.** A camera sample whose radiance is NaN or infinite is
 //! counted in [`RenderStats::nonfinite_samples`] and dropped by the film
 //! (neither its value nor its filter weight reaches the pixel); it is never
@@ -37,7 +45,8 @@ use crate::camera::camera_sample;
 use crate::film::{Film, FilmTile, PixelBounds};
 use crate::integrator::{PathIntegrator, PathStats};
 use crate::scene::Scene;
-use crate::spectrum::Rgb;
+use crate::spectrum::sensor::{output_from_sensor, sample_xyz};
+use crate::spectrum::{Rgb, SampledSpectrum, SampledWavelengths};
 use lowdisc::catalog::SamplerConfig;
 use lowdisc::pixel::{PixelSampler, Sampler};
 use rayon::prelude::*;
@@ -149,6 +158,9 @@ pub fn render(
     let window = opts.window_in(full)?;
     let range = opts.sample_range();
     let mut film = Film::with_window(params, Some(window)).map_err(RenderError::Film)?;
+    if opts.spectral {
+        film.set_output_from_sensor(Some(output_from_sensor(params.white_balance)));
+    }
     let sampler = SamplerConfig {
         resolution: film.full_resolution(),
         ..opts.sampler
@@ -271,8 +283,11 @@ fn render_tile(
             if replay && pixel == last && s >= range.end {
                 break;
             }
-            let (l, weight) =
-                trace_camera_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats);
+            let (l, weight) = if opts.spectral {
+                trace_spectral_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats)
+            } else {
+                trace_camera_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats)
+            };
             if keep_pixel && range.contains(s) {
                 film.add_sample(pixel, l, weight);
                 samples += 1;
@@ -312,4 +327,28 @@ pub fn trace_camera_sample<S: PixelSampler>(
     let ray = scene.camera().generate_ray_for(&cs);
     let l = integrator.li(scene, ray, sampler, bsdf_seed, stats);
     (l, cs.filter_weight)
+}
+
+/// [`trace_camera_sample`] in spectral mode: draws the wavelength sample
+/// (`get_1d`, dimension 0) after starting the sample, then the film position
+/// and the lens (dimensions 1-2), traces the four wavelengths together and
+/// returns the sensor's XYZ (in an [`Rgb`]'s fields) and the filter weight.
+pub fn trace_spectral_sample<S: PixelSampler>(
+    scene: &Scene,
+    integrator: &PathIntegrator,
+    sampler: &mut S,
+    pixel: [i32; 2],
+    index: u32,
+    bsdf_seed: u64,
+    stats: &mut PathStats,
+) -> (Rgb, f32) {
+    sampler.start_pixel_sample([pixel[0] as u32, pixel[1] as u32], index, 0);
+    let u_lambda = sampler.get_1d();
+    let u_film = sampler.get_pixel_2d();
+    let u_lens = sampler.get_2d();
+    let lambda = SampledWavelengths::sample_visible(u_lambda);
+    let cs = camera_sample(&scene.film().filter, pixel, u_film, u_lens);
+    let ray = scene.camera().generate_ray_for(&cs);
+    let l: SampledSpectrum = integrator.li_for(scene, ray, sampler, bsdf_seed, &lambda, stats);
+    (sample_xyz(l, &lambda), cs.filter_weight)
 }

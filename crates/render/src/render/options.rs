@@ -44,6 +44,10 @@ pub struct RenderOptions {
     /// The sample indices to take in every pixel, within `0..spp`; `None`
     /// takes them all.
     pub samples: Option<SampleRange>,
+    /// Spectral rendering (four sampled wavelengths per camera sample, RGB
+    /// parameters uplifted to spectra, a CIE 1931 sensor); `false` renders
+    /// in RGB (see [`crate::spectrum`]).
+    pub spectral: bool,
 }
 
 /// A half-open range `start..end` of sample indices (`Copy`, unlike
@@ -88,7 +92,7 @@ impl std::fmt::Display for SampleRange {
 
 impl Default for RenderOptions {
     /// ZSobol, seed 0, 16 samples per pixel, the default path tracer, all
-    /// cores, 16-pixel tiles, every pixel and every sample.
+    /// cores, 16-pixel tiles, every pixel and every sample, RGB.
     fn default() -> Self {
         RenderOptions {
             sampler: SamplerConfig::new(SamplerName::ZSobol),
@@ -97,6 +101,7 @@ impl Default for RenderOptions {
             tile_size: 16,
             window: None,
             samples: None,
+            spectral: false,
         }
     }
 }

@@ -23,6 +23,7 @@ use crate::geometry::{Disk, Prim, ShapeSet, Sphere, TriangleMesh};
 use crate::light::{DiffuseAreaLight, Light, LightSampler, LightType};
 use crate::math::{Bounds3, Ray, Transform};
 use crate::spectrum::Rgb;
+use crate::spectrum::named::EmissionSpectrum;
 
 /// Diffuse emission of a shape (pbrt's `AreaLightSource "diffuse"`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,11 +82,12 @@ struct ShapeInfo {
 #[derive(Clone, Debug, Default)]
 pub struct SceneBuilder {
     shapes: ShapeSet,
-    mesh_info: Vec<(u32, Option<Emission>)>,
-    sphere_info: Vec<(u32, Option<Emission>)>,
-    disk_info: Vec<(u32, Option<Emission>)>,
+    mesh_info: Vec<(u32, Option<Emission>, Option<EmissionSpectrum>)>,
+    sphere_info: Vec<(u32, Option<Emission>, Option<EmissionSpectrum>)>,
+    disk_info: Vec<(u32, Option<Emission>, Option<EmissionSpectrum>)>,
     materials: Vec<Material>,
-    lights: Vec<Light>,
+    lights: Vec<(Light, Option<EmissionSpectrum>)>,
+    emission_spectrum: Option<EmissionSpectrum>,
     camera: Option<CameraSpec>,
     film: FilmSettings,
 }
@@ -103,21 +105,30 @@ impl SceneBuilder {
     /// Adds a triangle mesh with a material and optional emission.
     pub fn add_mesh(&mut self, mesh: TriangleMesh, material: u32, emission: Option<Emission>) {
         self.shapes.add_mesh(mesh);
-        self.mesh_info.push((material, emission));
+        let s = self.emission_spectrum.clone();
+        self.mesh_info.push((material, emission, s));
     }
     /// Adds a sphere with a material and optional emission.
     pub fn add_sphere(&mut self, s: Sphere, material: u32, emission: Option<Emission>) {
         self.shapes.add_sphere(s);
-        self.sphere_info.push((material, emission));
+        let s = self.emission_spectrum.clone();
+        self.sphere_info.push((material, emission, s));
     }
     /// Adds a disk with a material and optional emission.
     pub fn add_disk(&mut self, d: Disk, material: u32, emission: Option<Emission>) {
         self.shapes.add_disk(d);
-        self.disk_info.push((material, emission));
+        let s = self.emission_spectrum.clone();
+        self.disk_info.push((material, emission, s));
     }
     /// Adds a light that is not attached to a shape (point, infinite...).
     pub fn add_light(&mut self, l: Light) {
-        self.lights.push(l);
+        self.lights.push((l, self.emission_spectrum.clone()));
+    }
+    /// The emission spectrum (spectral mode) of the shapes' emission and the
+    /// lights added after this call: `Some` for a light given as a spectrum
+    /// (blackbody, sampled, file), `None` (the default) to uplift its RGB.
+    pub fn set_emission_spectrum(&mut self, s: Option<EmissionSpectrum>) {
+        self.emission_spectrum = s;
     }
     /// Sets the camera.
     pub fn set_camera(&mut self, c: CameraSpec) {
@@ -143,10 +154,12 @@ impl SceneBuilder {
         let accel = Accel::build(self.shapes);
         let shapes = accel.shapes();
         let mut lights = Vec::new();
+        let mut light_spectra = Vec::new();
         let mut infos = [Vec::new(), Vec::new(), Vec::new()];
         let groups = [&self.mesh_info, &self.sphere_info, &self.disk_info];
         for (kind, group) in groups.into_iter().enumerate() {
-            for (i, &(material, emission)) in group.iter().enumerate() {
+            for (i, (material, emission, spectrum)) in group.iter().enumerate() {
+                let (material, emission) = (*material, *emission);
                 if material >= nmat {
                     return Err(RenderError::InvalidScene(format!(
                         "material index {material} out of range ({nmat} materials)"
@@ -165,6 +178,7 @@ impl SceneBuilder {
                                 DiffuseAreaLight::from_prim(shapes, p, e.l, 1.0, e.two_sided)
                                     .map_err(|err| RenderError::InvalidScene(err.to_string()))?;
                             lights.push(Light::Area(light));
+                            light_spectra.push(spectrum.clone());
                         }
                         Some(first)
                     }
@@ -176,7 +190,10 @@ impl SceneBuilder {
                 });
             }
         }
-        lights.extend(self.lights);
+        for (l, s) in self.lights {
+            lights.push(l);
+            light_spectra.push(s);
+        }
         let bounds = accel.bounds();
         for l in &mut lights {
             l.preprocess(&bounds);
@@ -193,6 +210,7 @@ impl SceneBuilder {
             sphere_info,
             disk_info,
             lights,
+            light_spectra,
             infinite_lights,
             light_sampler,
             camera_spec,
@@ -222,6 +240,7 @@ pub struct Scene {
     sphere_info: Vec<ShapeInfo>,
     disk_info: Vec<ShapeInfo>,
     lights: Vec<Light>,
+    light_spectra: Vec<Option<EmissionSpectrum>>,
     infinite_lights: Vec<usize>,
     light_sampler: LightSampler,
     camera_spec: CameraSpec,
@@ -261,6 +280,12 @@ impl Scene {
     /// Every light (area lights first, one per emissive primitive).
     pub fn lights(&self) -> &[Light] {
         &self.lights
+    }
+    /// The emission spectrum of light `i` (spectral mode), when it was given
+    /// as a spectrum rather than RGB.
+    #[inline]
+    pub fn light_spectrum(&self, i: usize) -> Option<&lowdisc_colour::cie::Tabulated> {
+        self.light_spectra.get(i).and_then(|s| s.as_deref())
     }
     /// Indices of the infinite lights (seen by escaping rays).
     pub fn infinite_lights(&self) -> &[usize] {

@@ -4,9 +4,9 @@
 //! ([`FloatTexture`], [`SpectrumTexture`]) inside a [`super::Material`].
 
 use super::MaterialError;
-use crate::bsdf::metals::named_spectrum_rgb;
 use crate::bsdf::microfacet::{TrowbridgeReitz, roughness_to_alpha};
-use crate::spectrum::Rgb;
+use crate::spectrum::named::{NamedSpectrum, named_metal};
+use crate::spectrum::{Colour, Rgb};
 use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
 
 /// Microfacet roughness parameters as pbrt-v4 takes them: values (`R =
@@ -68,7 +68,10 @@ impl Roughness<FloatTexture> {
 /// A conductor's optical constants: explicit `eta`/`k`, or pbrt-v4's
 /// artist-friendly `reflectance` (then `eta = 1`, `k = 2 sqrt(r) / sqrt(1 - r)`
 /// with `r` clamped to `[0, 0.9999]`, which gives exactly `r` at normal
-/// incidence). Values (`S = Rgb`, the default) or RGB textures.
+/// incidence), or a named metal's measured spectra. Values (`S = Rgb`, the
+/// default) or RGB textures. In spectral mode `eta`/`k` given as RGB are
+/// uplifted as unbounded spectra and `reflectance` as an albedo, as pbrt-v4
+/// does; named metals are evaluated at the sampled wavelengths.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ConductorSpec<S = Rgb> {
     /// Complex index of refraction per channel.
@@ -80,6 +83,14 @@ pub enum ConductorSpec<S = Rgb> {
     },
     /// Normal-incidence reflectance.
     Reflectance(S),
+    /// A named metal (`"metal-Au-eta"`, `"metal-Au-k"` ...): its measured
+    /// spectra, and their band averages in RGB mode.
+    Named {
+        /// Real part.
+        eta: &'static NamedSpectrum,
+        /// Imaginary part.
+        k: &'static NamedSpectrum,
+    },
 }
 
 impl ConductorSpec {
@@ -87,22 +98,27 @@ impl ConductorSpec {
     pub fn named(metal: &str) -> Result<ConductorSpec, MaterialError> {
         let get = |which: &str| {
             let name = format!("metal-{metal}-{which}");
-            named_spectrum_rgb(&name).ok_or(MaterialError::UnknownSpectrum(name))
+            named_metal(&name).ok_or(MaterialError::UnknownSpectrum(name))
         };
-        Ok(ConductorSpec::EtaK {
+        Ok(ConductorSpec::Named {
             eta: get("eta")?,
             k: get("k")?,
         })
     }
-    /// `(eta, k)` per channel.
+    /// `(eta, k)` per channel (RGB mode).
     pub fn eta_k(&self) -> (Rgb, Rgb) {
+        self.eta_k_for(&())
+    }
+    /// `(eta, k)` per lane of colour `C` at wavelengths `w`.
+    pub fn eta_k_for<C: Colour>(&self, w: &C::Wavelengths) -> (C, C) {
         match *self {
-            ConductorSpec::EtaK { eta, k } => (eta, k),
+            ConductorSpec::EtaK { eta, k } => (C::unbounded(eta, w), C::unbounded(k, w)),
             ConductorSpec::Reflectance(r) => {
-                let r = r.clamp(0.0, 0.9999);
+                let r = C::albedo(r, w).clamp(0.0, 0.9999);
                 let k = r.map(|x| 2.0 * x.sqrt() / (1.0 - x).max(0.0).sqrt());
-                (Rgb::ONE, k)
+                (C::ONE, k)
             }
+            ConductorSpec::Named { eta, k } => (C::measured(eta, w), C::measured(k, w)),
         }
     }
 }
@@ -115,6 +131,7 @@ impl From<ConductorSpec> for ConductorSpec<SpectrumTexture> {
                 k: k.into(),
             },
             ConductorSpec::Reflectance(r) => ConductorSpec::Reflectance(r.into()),
+            ConductorSpec::Named { eta, k } => ConductorSpec::Named { eta, k },
         }
     }
 }
@@ -129,6 +146,7 @@ impl ConductorSpec<SpectrumTexture> {
                 k: k.evaluate(ctx),
             },
             ConductorSpec::Reflectance(r) => ConductorSpec::Reflectance(r.evaluate(ctx)),
+            ConductorSpec::Named { eta, k } => ConductorSpec::Named { eta, k },
         }
     }
 }

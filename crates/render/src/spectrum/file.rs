@@ -1,164 +1,13 @@
-//! RGB colour ([`Rgb`]) and the reduction of measured spectra to RGB.
-//!
-//! The renderer is RGB: every "spectrum" is three `f32` channels. Measured
-//! spectra (pbrt `.spd` files of "wavelength value" pairs, wavelengths in nm)
-//! are reduced by averaging the piecewise-linear spectrum over three rough
-//! bands: blue 400–500 nm, green 500–600 nm, red 600–700 nm
+//! Measured spectra from pbrt `.spd` files ("wavelength value" pairs,
+//! wavelengths in nm, `#` comments) and their reduction to RGB for RGB
+//! mode: the piecewise-linear spectrum averaged over three rough bands,
+//! blue 400–500 nm, green 500–600 nm, red 600–700 nm
 //! ([`spectrum_samples_to_rgb`]). This is a crude projection (no colour
-//! matching functions), adequate for the smooth optical constants of metals.
+//! matching functions), adequate for the smooth optical constants of
+//! metals; spectral mode evaluates the spectra themselves.
 
-use std::ops::{Add, AddAssign, Div, DivAssign, Index, Mul, MulAssign, Sub};
+use super::Rgb;
 use std::path::{Path, PathBuf};
-
-/// A linear RGB triple (radiance, reflectance, or optical constants).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Rgb {
-    /// Red channel.
-    pub r: f32,
-    /// Green channel.
-    pub g: f32,
-    /// Blue channel.
-    pub b: f32,
-}
-
-impl Rgb {
-    /// Black.
-    pub const ZERO: Rgb = Rgb::splat(0.0);
-    /// White (1, 1, 1).
-    pub const ONE: Rgb = Rgb::splat(1.0);
-
-    /// Builds a colour from its channels.
-    #[inline]
-    pub const fn new(r: f32, g: f32, b: f32) -> Rgb {
-        Rgb { r, g, b }
-    }
-    /// All channels equal to `v`.
-    #[inline]
-    pub const fn splat(v: f32) -> Rgb {
-        Rgb { r: v, g: v, b: v }
-    }
-    /// From an array `[r, g, b]`.
-    #[inline]
-    pub const fn from_array(a: [f32; 3]) -> Rgb {
-        Rgb::new(a[0], a[1], a[2])
-    }
-    /// The channels as an array.
-    #[inline]
-    pub const fn to_array(self) -> [f32; 3] {
-        [self.r, self.g, self.b]
-    }
-    /// Applies `f` to every channel.
-    #[inline]
-    pub fn map(self, f: impl Fn(f32) -> f32) -> Rgb {
-        Rgb::new(f(self.r), f(self.g), f(self.b))
-    }
-    /// Largest channel.
-    #[inline]
-    pub fn max_component(self) -> f32 {
-        self.r.max(self.g).max(self.b)
-    }
-    /// Smallest channel.
-    #[inline]
-    pub fn min_component(self) -> f32 {
-        self.r.min(self.g).min(self.b)
-    }
-    /// Mean of the channels.
-    #[inline]
-    pub fn average(self) -> f32 {
-        (self.r + self.g + self.b) / 3.0
-    }
-    /// Luminance with the Rec. 709 / sRGB weights.
-    #[inline]
-    pub fn luminance(self) -> f32 {
-        0.2126 * self.r + 0.7152 * self.g + 0.0722 * self.b
-    }
-    /// True when every channel is exactly zero.
-    #[inline]
-    pub fn is_black(self) -> bool {
-        self.r == 0.0 && self.g == 0.0 && self.b == 0.0
-    }
-    /// True when every channel is finite.
-    #[inline]
-    pub fn is_finite(self) -> bool {
-        self.r.is_finite() && self.g.is_finite() && self.b.is_finite()
-    }
-    /// Channels clamped to `[lo, hi]` (NaN becomes `lo`).
-    #[inline]
-    pub fn clamp(self, lo: f32, hi: f32) -> Rgb {
-        self.map(|x| if x > lo { x.min(hi) } else { lo })
-    }
-    /// Channel-wise square root of the non-negative part.
-    #[inline]
-    pub fn sqrt(self) -> Rgb {
-        self.map(|x| x.max(0.0).sqrt())
-    }
-    /// Channel-wise `e^x`.
-    #[inline]
-    pub fn exp(self) -> Rgb {
-        self.map(f32::exp)
-    }
-}
-
-impl Index<usize> for Rgb {
-    type Output = f32;
-    #[inline]
-    fn index(&self, i: usize) -> &f32 {
-        match i {
-            0 => &self.r,
-            1 => &self.g,
-            _ => &self.b,
-        }
-    }
-}
-
-macro_rules! rgb_binop {
-    ($tr:ident, $f:ident, $op:tt, $tra:ident, $fa:ident) => {
-        impl $tr for Rgb {
-            type Output = Rgb;
-            #[inline]
-            fn $f(self, o: Rgb) -> Rgb {
-                Rgb::new(self.r $op o.r, self.g $op o.g, self.b $op o.b)
-            }
-        }
-        impl $tr<f32> for Rgb {
-            type Output = Rgb;
-            #[inline]
-            fn $f(self, s: f32) -> Rgb {
-                Rgb::new(self.r $op s, self.g $op s, self.b $op s)
-            }
-        }
-        impl $tra for Rgb {
-            #[inline]
-            fn $fa(&mut self, o: Rgb) {
-                *self = *self $op o;
-            }
-        }
-        impl $tra<f32> for Rgb {
-            #[inline]
-            fn $fa(&mut self, s: f32) {
-                *self = *self $op s;
-            }
-        }
-    };
-}
-rgb_binop!(Add, add, +, AddAssign, add_assign);
-rgb_binop!(Mul, mul, *, MulAssign, mul_assign);
-rgb_binop!(Div, div, /, DivAssign, div_assign);
-
-impl Sub for Rgb {
-    type Output = Rgb;
-    #[inline]
-    fn sub(self, o: Rgb) -> Rgb {
-        Rgb::new(self.r - o.r, self.g - o.g, self.b - o.b)
-    }
-}
-impl Mul<Rgb> for f32 {
-    type Output = Rgb;
-    #[inline]
-    fn mul(self, c: Rgb) -> Rgb {
-        c * self
-    }
-}
 
 /// Errors from reading a spectrum file.
 #[derive(Debug)]
@@ -344,21 +193,5 @@ mod tests {
         let missing = spectrum_file_to_rgb("/nonexistent/x.spd").unwrap_err();
         assert!(matches!(missing, SpectrumError::Io { .. }));
         assert!(missing.to_string().contains("/nonexistent/x.spd"));
-    }
-
-    #[test]
-    fn rgb_ops() {
-        let a = Rgb::new(1.0, 2.0, 4.0);
-        assert_eq!(a * 2.0 - a, a);
-        assert_eq!(a / a, Rgb::ONE);
-        assert_eq!(a.max_component(), 4.0);
-        assert_eq!(a.min_component(), 1.0);
-        assert!((Rgb::ONE.luminance() - 1.0).abs() < 1e-6);
-        assert_eq!(
-            Rgb::new(f32::NAN, -1.0, 3.0).clamp(0.0, 1.0),
-            Rgb::new(0.0, 0.0, 1.0)
-        );
-        assert!(Rgb::ZERO.is_black() && !a.is_black());
-        assert_eq!(a[2], 4.0);
     }
 }
