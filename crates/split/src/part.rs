@@ -98,6 +98,7 @@ pub fn settings(opts: &RenderOptions) -> BTreeMap<String, String> {
         ("maxdepth", opts.integrator.max_depth.to_string()),
         ("light_strategy", format!("{:?}", opts.integrator.strategy)),
         ("tile_size", opts.tile_size.to_string()),
+        ("spectral", opts.spectral.to_string()),
     ]
     .into_iter()
     .map(|(k, v)| (k.to_string(), v))

@@ -71,6 +71,9 @@ struct Settings {
     threshold: f64,
     max_depth: u32,
     threads: Option<usize>,
+    /// Spectral rendering (`--spectral`); absent in plans that predate it.
+    #[serde(default)]
+    spectral: bool,
     command: Vec<String>,
 }
 
@@ -218,6 +221,7 @@ fn settings(c: &ExperimentConfig) -> Settings {
         threshold: c.threshold,
         max_depth: c.max_depth,
         threads: c.threads,
+        spectral: c.spectral,
         command: c.command.clone(),
     }
 }
@@ -250,6 +254,7 @@ fn config(s: Settings, out: &Path) -> Result<ExperimentConfig> {
         threshold: s.threshold,
         max_depth: s.max_depth,
         threads: s.threads,
+        spectral: s.spectral,
         out: out.to_path_buf(),
         command: s.command,
     })
