@@ -40,6 +40,8 @@ pub mod error;
 pub mod halton;
 pub mod hash;
 pub mod independent;
+#[cfg(test)]
+mod net_check;
 pub mod paper;
 pub mod pcg;
 pub mod pixel;

@@ -127,6 +127,7 @@ pub fn sample(index: u32, dim: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::net_check::{is_net, t_value};
     use alloc::vec::Vec;
 
     #[test]
@@ -164,38 +165,9 @@ mod tests {
         assert_eq!(sample(1, 1), 2 << 30);
     }
 
-    /// Every split of `m` digits over `dims` axes.
-    fn shapes(m: u32, dims: usize) -> Vec<Vec<u32>> {
-        if dims == 1 {
-            return alloc::vec![alloc::vec![m]];
-        }
-        (0..=m)
-            .flat_map(|a| {
-                shapes(m - a, dims - 1).into_iter().map(move |mut r| {
-                    r.insert(0, a);
-                    r
-                })
-            })
-            .collect()
-    }
-
-    /// Whether each box with `bits[i]` leading binary digits on axis `i`
-    /// holds the same number of `points`.
-    fn balanced(points: &[[u32; 4]], axes: &[usize], bits: &[u32]) -> bool {
-        let total: u32 = bits.iter().sum();
-        let mut count = alloc::vec![0usize; 1 << total];
-        for p in points {
-            let cell = axes.iter().zip(bits).fold(0usize, |c, (&a, &b)| {
-                (c << b) | p[a].checked_shr(32 - b).unwrap_or(0) as usize
-            });
-            count[cell] += 1;
-        }
-        count.iter().all(|&c| c == count[0])
-    }
-
-    fn block(start: u32, len: u32) -> Vec<[u32; 4]> {
+    fn block(start: u32, len: u32, axes: &[u32]) -> Vec<Vec<u32>> {
         (start..start + len)
-            .map(|i| core::array::from_fn(|d| sample(i, d as u32)))
+            .map(|i| axes.iter().map(|&d| sample(i, d)).collect())
             .collect()
     }
 
@@ -204,25 +176,15 @@ mod tests {
         for m in 0..=4u32 {
             let len = 1u32 << (2 * m);
             for start in (0..1u32 << 10).step_by(len as usize) {
-                let points = block(start, len);
-                for shape in shapes(m, 4) {
-                    let bits: Vec<u32> = shape.iter().map(|d| 2 * d).collect();
-                    assert!(
-                        balanced(&points, &[0, 1, 2, 3], &bits),
-                        "m={m} {start} {shape:?}"
-                    );
-                }
+                let points = block(start, len, &[0, 1, 2, 3]);
+                assert!(is_net(&points, m, 2), "m={m} {start}");
             }
         }
     }
 
-    /// The smallest binary `t` for which the first `2^m` points of the
-    /// axes pair `(x, y)` are a (t, m, 2)-net.
-    fn binary_t(x: usize, y: usize, m: u32) -> u32 {
-        let points = block(0, 1 << m);
-        (0..=m)
-            .find(|&t| (0..=m - t).all(|a| balanced(&points, &[x, y], &[a, m - t - a])))
-            .unwrap_or(m)
+    /// The binary t-value of the first `2^m` points of dimensions `x, y`.
+    fn binary_t(x: u32, y: u32, m: u32) -> u32 {
+        t_value(&block(0, 1 << m, &[x, y]), m)
     }
 
     #[test]

@@ -174,16 +174,13 @@ impl WordSampler for ZOrderSzSampler {
     }
 
     fn get_1d_word(&mut self) -> u32 {
-        let d = self.dimension;
-        self.dimension = d.wrapping_add(1);
+        let d = super::next_key(&mut self.dimension, 1) as u32;
         self.word(slot(d))
     }
 
     fn get_2d_words(&mut self) -> [u32; 2] {
-        let d = self.dimension;
-        self.dimension = d.wrapping_add(2);
-        let first = self.word(slot(d));
-        [first, self.word(slot(d.wrapping_add(1)))]
+        let d = super::next_key(&mut self.dimension, 2) as u32;
+        [slot(d), slot(d.wrapping_add(1))].map(|s| self.word(s))
     }
 
     fn get_pixel_2d_words(&mut self) -> [u32; 2] {

@@ -2,6 +2,7 @@
 //! promises, per pixel and up the Morton hierarchy.
 
 use super::*;
+use crate::net_check::{is_net, shapes, stratified};
 use alloc::vec::Vec;
 
 fn sampler(spp: u32) -> ZOrderSzSampler {
@@ -34,46 +35,6 @@ fn points(s: &mut ZOrderSzSampler, pixels: &[[u32; 2]], axes: &[usize]) -> Vec<V
             axes.iter().map(|&a| w[a]).collect()
         })
         .collect()
-}
-
-/// Whether every box with `bits[i]` leading binary digits on axis `i` holds
-/// at most `max(1, n / cells)` points, and exactly that many when `n` is a
-/// multiple of the cell count.
-fn stratified(points: &[Vec<u32>], bits: &[u32]) -> bool {
-    let total: u32 = bits.iter().sum();
-    let mut count = alloc::vec![0usize; 1 << total];
-    for p in points {
-        let cell = p.iter().zip(bits).fold(0usize, |c, (&w, &b)| {
-            (c << b) | w.checked_shr(32 - b).unwrap_or(0) as usize
-        });
-        count[cell] += 1;
-    }
-    let want = (points.len() >> total).max(1);
-    count.iter().all(|&c| c <= want)
-        && (points.len() < 1 << total || count.iter().all(|&c| c == want))
-}
-
-/// Every split of `m` digits over `dims` axes.
-fn shapes(m: u32, dims: usize) -> Vec<Vec<u32>> {
-    if dims == 1 {
-        return alloc::vec![alloc::vec![m]];
-    }
-    (0..=m)
-        .flat_map(|a| {
-            shapes(m - a, dims - 1).into_iter().map(move |mut r| {
-                r.insert(0, a);
-                r
-            })
-        })
-        .collect()
-}
-
-/// Whether `points` is a (0,m,s)-net in base `2^digit_bits`.
-fn is_net(points: &[Vec<u32>], m: u32, digit_bits: u32) -> bool {
-    shapes(m, points[0].len()).iter().all(|shape| {
-        let bits: Vec<u32> = shape.iter().map(|d| digit_bits * d).collect();
-        stratified(points, &bits)
-    })
 }
 
 /// The pixels of the aligned `side x side` block at `corner`.
