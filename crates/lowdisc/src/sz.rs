@@ -2,7 +2,8 @@
 //! construction behind the SZ sequences of Ahmed, Pharr, Ostromoukhov and
 //! Huang (2025), where each base-4 digit is a pair of bits and every entry
 //! of a generator matrix over GF(4) is a 2x2 binary block, so a point is an
-//! XOR of 32-bit columns exactly like a Sobol point.
+//! XOR of 32-bit columns exactly like a Sobol point. The matrices here are
+//! generalized Faure matrices (below), not necessarily the paper's.
 //!
 //! ## The matrices
 //! GF(4) = {0, 1, ω, ω² = ω + 1}; an element is the 2-bit label `b1 b0`
