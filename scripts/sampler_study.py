@@ -21,6 +21,11 @@ the square root of the MSE ratio). The t factor is read back from
 results.json (its intervals' half-width over the standard error), so this
 script needs only the Python standard library.
 
+The Z-order runs (`--runs zorder-direct,zorder-gi,zorder-cornell`) compare
+the Z-order candidates against `zsobol`, `sobol` and `independent` (issue
+11's goal) on the direct preset, the GI preset at 64x64 and the Bitterli
+Cornell box, and print each candidate's masked, blurred and FLIP ratios.
+
 Usage: scripts/sampler_study.py [--lowdisc BIN] [--out DIR] [--runs LIST] [--tables-only]
 """
 
@@ -55,9 +60,32 @@ SETTINGS = {
     "builtin": (None, "256x144", 8, 1024),
 }
 SPP = 16
+# The Z-order study: name -> (scene arguments, resolution, runs, reference spp).
+SHARED = Path(__file__).resolve().parent.parent.parent / "shared" / "scenes"
+ZORDER = {
+    "zorder-direct": (["--preset", "direct"], "128x128", 16, 4096),
+    "zorder-gi": (["--preset", "gi"], "64x64", 16, 2048),
+    "zorder-cornell": ([str(SHARED / "bitterli-cornell-box" / "scene-v4.pbrt")], "64x64", 16, 1024),
+    "zorder-bmw": ([str(SHARED / "bmw-m6" / "bmw-m6.pbrt"), "--envmap",
+                    str(SHARED / "envmaps" / "polyhaven-kiara_1_dawn_1k.hdr")], "96x68", 16, 1024),
+}
+ZORDER_BASELINES = ["independent", "sobol", "zsobol"]
+ZORDER_CANDIDATES = ["zsobol-4d", "zorder-sz"]
+# Issue 11's goal: masked MSE at most these multiples of each baseline.
+GOAL = {"zorder-direct": {"sobol": 0.80, "independent": 0.168}, "zorder-gi": {"zsobol": 0.90},
+        "zorder-cornell": {"zsobol": 0.90}, "zorder-bmw": {"zsobol": 0.90}}
 
 
 def run(lowdisc, out, name):
+    if name in ZORDER:
+        scene, res, runs, ref_spp = ZORDER[name]
+        cmd = [lowdisc, "experiment", *scene, "--samplers",
+               ",".join(ZORDER_BASELINES + ZORDER_CANDIDATES), "--res", res, "--runs", str(runs),
+               "--spp", str(SPP), "--ref-spp", str(ref_spp), "--conv-max", "1", "--conv-res", res,
+               "--conv-ref-spp", str(ref_spp), "--out", str(out / name)]
+        print("+", " ".join(cmd), file=sys.stderr)
+        subprocess.run(cmd, check=True)
+        return
     preset, res, runs, ref_spp = SETTINGS[name]
     scene = ["--preset", preset] if preset else []
     samplers = SAMPLERS if preset else SAMPLERS + ["zsobol"]
@@ -176,6 +204,40 @@ def tables(path, name):
     return "\n".join(lines) + "\n"
 
 
+def zorder_tables(path, name):
+    """Each Z-order candidate against the baselines, with the goal's verdict."""
+    results = json.loads(path.read_text())
+    t = t_factor(results)
+    by = {s["name"]: s for s in results["samplers"]}
+    st = results["settings"]
+    lines = [
+        f"### {name}: {st['width']}x{st['height']}, {st['spp']} spp, {st['runs']} paired seeds, "
+        f"reference {st['ref_spp']} spp `{st['ref_sampler']}`, depth {st['max_depth']}, "
+        f"{100 * results['kept_fraction']:.1f} % of pixels kept by the mask, "
+        f"wall {results['wall_time_s']:.0f} s",
+        "",
+        "| sampler | masked MSE ± SE | / independent | / sobol | / zsobol | blurred / zsobol "
+        "| FLIP / zsobol | goal |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    goal = GOAL.get(name, {})
+    for cand in ["zsobol"] + ZORDER_CANDIDATES:
+        mean, se, _ = summary(column(by[cand], "masked_mse"), t)
+        row, met = [f"`{cand}`", f"{mean:.4e} ± {se:.1e}"], []
+        for base in ZORDER_BASELINES:
+            r = paired(column(by[cand], "masked_mse"), column(by[base], "masked_mse"), t)
+            row.append("1" if base == cand else fmt_ratio(r))
+            if base in goal:
+                met.append(f"{'met' if r[1][1] <= goal[base] else 'not met'} "
+                           f"(≤ {goal[base]} x {base})")
+        for metric in ("blurred_mse", "flip"):
+            r = paired(column(by[cand], metric), column(by["zsobol"], metric), t)
+            row.append("1" if cand == "zsobol" else f"{fmt_ratio(r)} {r[2]}")
+        row.append("; ".join(met) if cand != "zsobol" else "")
+        lines.append("| " + " | ".join(row) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--lowdisc", default="target/release/lowdisc")
@@ -183,12 +245,13 @@ def main():
     p.add_argument("--tables-only", action="store_true",
                    help="only print the tables of existing results.json files")
     p.add_argument("--runs", default="direct,gi,gi-64",
-                   help="which of the study's runs: " + ", ".join(SETTINGS))
+                   help="which of the study's runs: " + ", ".join([*SETTINGS, *ZORDER]))
     a = p.parse_args()
     for name in a.runs.split(","):
         if not a.tables_only:
             run(a.lowdisc, a.out, name)
-        print(tables(a.out / name / "results.json", name))
+        table = zorder_tables if name in ZORDER else tables
+        print(table(a.out / name / "results.json", name))
 
 
 if __name__ == "__main__":

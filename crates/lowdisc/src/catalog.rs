@@ -26,6 +26,7 @@
 //! | `pmj02bn` | generated pmj02bn (blue-noise) sets | pixel (0,0) of a 1x1 image |
 //! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
 //! | `zsobol-joint` | Z-order Sobol, 4-D groups per path vertex | pixel (0,0) of a 1x1 image |
+//! | `zorder-sz` | Z-order base-4 (0,4)-sequence, film x light in 5-D | pixel (0,0) of a 1x1 image |
 
 mod points;
 
@@ -37,7 +38,7 @@ use crate::paper::check_threshold;
 use crate::pixel::{
     BurleySampler, GlobalSobolMode, GlobalSobolSampler, GroupLayout, HaltonSampler,
     IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, Sampler,
-    StratifiedSampler, ZSobolJointSampler, ZSobolSampler,
+    StratifiedSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
@@ -95,11 +96,14 @@ pub enum SamplerName {
     /// `zsobol-joint`: Z-order Sobol padded by 4-D groups aligned with the
     /// path tracer's scattering vertices.
     ZSobolJoint,
+    /// `zorder-sz`: Z-order over the base-4 (0,4)-sequence of [`crate::sz`],
+    /// film offset, light choice and light position jointly stratified.
+    ZOrderSz,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 21] = [
+    pub const ALL: [SamplerName; 22] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -121,6 +125,7 @@ impl SamplerName {
         SamplerName::Pmj02Bn,
         SamplerName::ZSobol4d,
         SamplerName::ZSobolJoint,
+        SamplerName::ZOrderSz,
     ];
 
     /// The name as written on the command line.
@@ -147,6 +152,7 @@ impl SamplerName {
             SamplerName::Pmj02Bn => "pmj02bn",
             SamplerName::ZSobol4d => "zsobol-4d",
             SamplerName::ZSobolJoint => "zsobol-joint",
+            SamplerName::ZOrderSz => "zorder-sz",
         }
     }
 
@@ -179,6 +185,9 @@ impl SamplerName {
             SamplerName::ZSobol4d => "Z-order Sobol padded by 4-D groups in Burley's order",
             SamplerName::ZSobolJoint => {
                 "Z-order Sobol padded by 4-D groups aligned with the path tracer's vertices"
+            }
+            SamplerName::ZOrderSz => {
+                "Z-order base-4 (0,4)-sequence (SZ-style), film x light choice x light in 5-D"
             }
         }
     }
@@ -344,6 +353,9 @@ impl SamplerConfig {
                 let layout = self.name.group_layout().unwrap_or(GroupLayout::Sequential);
                 ZSobolJointSampler::new(spp, res, layout, RandomizeStrategy::FastOwen, seed)
                     .map(Sampler::from)
+            }
+            SamplerName::ZOrderSz => {
+                ZOrderSzSampler::new(spp, res, RandomizeStrategy::FastOwen, seed).map(Sampler::from)
             }
         }
     }

@@ -22,7 +22,8 @@
 //! * Every random choice takes an explicit seed.
 //!
 //! ## Modules
-//! * sequences: [`sobol`] (matrices, points, Gray-code batches), [`halton`],
+//! * sequences: [`sobol`] (matrices, points, Gray-code batches), [`sz`] (a
+//!   (0,4)-sequence in base 4 as binary columns), [`halton`],
 //!   [`stratified`], [`independent`];
 //! * randomizations: [`scramble`] (digital shift, Owen, fast Owen), [`paper`]
 //!   (Song & Ro's permutation), [`hash`] and [`pcg`] (seeded randomness);
@@ -39,6 +40,8 @@ pub mod error;
 pub mod halton;
 pub mod hash;
 pub mod independent;
+#[cfg(test)]
+mod net_check;
 pub mod paper;
 pub mod pcg;
 pub mod pixel;
@@ -46,6 +49,7 @@ pub mod pmj;
 pub mod scramble;
 pub mod sobol;
 pub mod stratified;
+pub mod sz;
 
 pub use error::Error;
 pub use scramble::RandomizeStrategy;

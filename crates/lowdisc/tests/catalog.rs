@@ -25,7 +25,7 @@ fn names_round_trip_and_are_distinct() {
         assert!(!n.description().is_empty());
         assert!(names[..i].iter().all(|m| *m != names[i]));
     }
-    assert_eq!(names.len(), 21);
+    assert_eq!(names.len(), 22);
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
@@ -130,6 +130,10 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     (
         SamplerName::ZSobolJoint,
         [0.9587626, 0.38267314, 0.58248913, 0.73361933, 0.016222775],
+    ),
+    (
+        SamplerName::ZOrderSz,
+        [0.8147841, 0.5291887, 0.69221556, 0.39676815, 0.8844348],
     ),
 ];
 

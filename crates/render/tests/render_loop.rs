@@ -37,6 +37,7 @@ fn output_is_bit_identical_with_one_and_two_threads() {
     for name in [
         SamplerName::ZSobol,
         SamplerName::ZSobolJoint,
+        SamplerName::ZOrderSz,
         SamplerName::Paper,
         SamplerName::Independent,
         SamplerName::Halton,

@@ -16,7 +16,7 @@
 //! * `padded-sobol`, `padded-sobol-lms`, `zsobol`, `sobol-burley`,
 //!   `laine-karras`, `sobol-pixel-xor`, `pmj02` and `pmj02bn` are pixel
 //!   samplers: their points are the `n`
-//!   `laine-karras`, `sobol-pixel-xor`, `zsobol-4d` and `zsobol-joint` are
+//!   `laine-karras`, `sobol-pixel-xor`, `zsobol-4d`, `zsobol-joint` and `zorder-sz` are
 //!   pixel samplers: their points are the `n`
 //!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
 //!   the in-pixel offset, dimensions `2j + 2, 2j + 3` the `get_2d` pair at
@@ -34,7 +34,7 @@ use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::pixel::{
     BurleySampler, GroupLayout, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler,
-    WordSampler, ZSobolJointSampler, ZSobolSampler,
+    WordSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
@@ -204,6 +204,10 @@ pub fn generate_points(
             let layout = name.group_layout().unwrap_or(GroupLayout::Sequential);
             let mut s =
                 ZSobolJointSampler::new(n, [1, 1], layout, RandomizeStrategy::FastOwen, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::ZOrderSz => {
+            let mut s = ZOrderSzSampler::new(n, [1, 1], RandomizeStrategy::FastOwen, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
     }

@@ -37,6 +37,7 @@ mod padded_sobol;
 mod pmj;
 mod sampler;
 mod stratified;
+mod zorder_sz;
 mod zsobol;
 mod zsobol_joint;
 
@@ -51,6 +52,7 @@ pub use padded_sobol::{PaddedSobolSampler, permutation_element};
 pub use pmj::PmjSampler;
 pub use sampler::Sampler;
 pub use stratified::StratifiedSampler;
+pub use zorder_sz::ZOrderSzSampler;
 pub use zsobol::ZSobolSampler;
 pub use zsobol_joint::{GroupLayout, ZSobolJointSampler};
 

@@ -5,8 +5,8 @@
 
 use super::{
     BurleySampler, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
-    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZSobolJointSampler,
-    ZSobolSampler,
+    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZOrderSzSampler,
+    ZSobolJointSampler, ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -32,6 +32,8 @@ pub enum Sampler {
     Pmj(PmjSampler),
     /// Z-order Sobol padded by 4-D groups.
     ZSobolJoint(ZSobolJointSampler),
+    /// Z-order over the base-4 (0,4)-sequence, film and light sample in 5-D.
+    ZOrderSz(ZOrderSzSampler),
 }
 
 /// Applies `$body` to the sampler inside whatever variant `$s` is.
@@ -48,6 +50,7 @@ macro_rules! dispatch {
             Sampler::PixelXor($inner) => $body,
             Sampler::Pmj($inner) => $body,
             Sampler::ZSobolJoint($inner) => $body,
+            Sampler::ZOrderSz($inner) => $body,
         }
     };
 }
@@ -155,5 +158,11 @@ impl From<PmjSampler> for Sampler {
 impl From<ZSobolJointSampler> for Sampler {
     fn from(s: ZSobolJointSampler) -> Self {
         Sampler::ZSobolJoint(s)
+    }
+}
+
+impl From<ZOrderSzSampler> for Sampler {
+    fn from(s: ZOrderSzSampler) -> Self {
+        Sampler::ZOrderSz(s)
     }
 }

@@ -172,6 +172,7 @@ impl WordSampler for ZSobolJointSampler {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::net_check::{shapes, stratified, t_value};
     use alloc::vec::Vec;
 
     const LAYOUTS: [GroupLayout; 2] = [GroupLayout::Sequential, GroupLayout::PathVertices];
@@ -198,46 +199,6 @@ mod tests {
                 ]
             })
             .collect()
-    }
-
-    /// Whether every elementary box of volume `2^-m` with the given
-    /// per-axis bit counts (summing to `m`) holds `points.len() >> m`
-    /// points (at most one when fewer than `2^m` points are given).
-    fn stratified(points: &[Vec<u32>], bits: &[u32]) -> bool {
-        let m: u32 = bits.iter().sum();
-        let mut count = alloc::vec![0usize; 1 << m];
-        for p in points {
-            let cell = p.iter().zip(bits).fold(0usize, |c, (&w, &b)| {
-                (c << b) | w.checked_shr(32 - b).unwrap_or(0) as usize
-            });
-            count[cell] += 1;
-        }
-        let want = (points.len() >> m).max(1);
-        count.iter().all(|&c| c <= want)
-            && (points.len() < 1 << m || count.iter().all(|&c| c == want))
-    }
-
-    /// Every split of `m` bits over `dims` axes.
-    fn shapes(m: u32, dims: usize) -> Vec<Vec<u32>> {
-        if dims == 1 {
-            return alloc::vec![alloc::vec![m]];
-        }
-        (0..=m)
-            .flat_map(|a| {
-                shapes(m - a, dims - 1).into_iter().map(move |mut r| {
-                    r.insert(0, a);
-                    r
-                })
-            })
-            .collect()
-    }
-
-    /// The smallest `t` for which `points` (`2^m` of them) is a (t, m, s)-net.
-    fn t_value(points: &[Vec<u32>], m: u32) -> u32 {
-        let dims = points[0].len();
-        (0..=m)
-            .find(|&t| shapes(m - t, dims).iter().all(|b| stratified(points, b)))
-            .unwrap_or(m)
     }
 
     #[test]

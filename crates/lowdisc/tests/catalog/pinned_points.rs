@@ -154,6 +154,13 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
             0x016cdb50, 0x75e3a882, 0x8d901c03, 0xdd555887, 0x997eb713,
         ],
     ),
+    (
+        SamplerName::ZOrderSz,
+        [
+            0xc5a8d907, 0x50dbb968, 0xb1350a6e, 0xba6b323f, 0xd13a2584, 0x08e804e6, 0x5baeb32e,
+            0xb96a06dc, 0xe415f4d8, 0x0523f8d2, 0x12d571dc, 0x46dea1a3,
+        ],
+    ),
 ];
 
 #[test]
