@@ -19,7 +19,7 @@ SOBOL_DIMENSIONS: int = _lowdisc.SOBOL_DIMENSIONS
 #: Dimensions of the Halton sequence (the first primes).
 HALTON_DIMENSIONS: int = _lowdisc.HALTON_DIMENSIONS
 
-SOBOL_SCRAMBLES = ("none", "xor", "owen", "fast-owen")
+SOBOL_SCRAMBLES = ("none", "xor", "owen", "fast-owen", "owen-per-digit")
 HALTON_SCRAMBLES = ("none", "permute", "owen")
 
 
@@ -48,8 +48,13 @@ def sobol(n: int, d: int, *, start: int = 0, order: str = "gray",
     ``scipy.stats.qmc.Sobol`` (unscrambled, the same numbers bit for bit);
     ``"natural"`` is Sobol's own (point k uses index k), as pbrt. The first
     ``2**m`` points are the same set in both. ``scramble``: ``"none"``,
-    ``"xor"`` (random digital shift), ``"owen"`` (exact nested uniform
-    scrambling) or ``"fast-owen"`` (hash-based). ``dtype`` float64 gives the
+    ``"xor"`` (random digital shift), ``"owen"`` (nested uniform scrambling,
+    exact in distribution: every digit is flipped by its own random tree
+    node, drawn 63 nodes per hash, so 3-4 hashes per value), ``"fast-owen"``
+    (Laine-Karras-style hash, nested but not exactly uniform) or
+    ``"owen-per-digit"`` (the same scramble law with one hash per digit: the
+    values of the renderer's ``sobol-owen`` sampler and of ``lowdisc points
+    --sampler sobol-owen``, about 3x slower). ``dtype`` float64 gives the
     32-digit values exactly, float32 the 24 leading digits, uint32 the digit
     words ``floor(x * 2**32)``.
     """

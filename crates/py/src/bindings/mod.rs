@@ -15,10 +15,10 @@ use numpy::{
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use crate::engine::Dtype;
 use crate::engine::pixel::{self, PixelSpec};
 use crate::engine::points::{self as sequences, PointSpec, Sequence};
-use crate::engine::{Dtype, Values};
-use arrays::{engine_error, values_2d};
+use arrays::engine_error;
 
 /// The sequence called `name`.
 fn sequence(name: &str) -> PyResult<Sequence> {
@@ -66,10 +66,7 @@ fn points<'py>(
         bits,
         dtype: Dtype::from_name(dtype).map_err(engine_error)?,
     };
-    let values: Values = py
-        .detach(|| sequences::generate(&spec))
-        .map_err(engine_error)?;
-    values_2d(py, values, n as usize, d as usize)
+    arrays::filled_2d(py, &spec, n as usize, d as usize)
 }
 
 /// The renderer's samples for `pixels` (an `(p, 2)` uint32 array of x, y), as

@@ -3,7 +3,8 @@
 //! their arguments first (so nothing below can panic on bad input).
 //!
 //! * [`points`]: sequences (Sobol, Halton, independent, stratified) as digit
-//!   words or floats, from any start index, in parallel chunks.
+//!   words or floats, from any start index, in parallel chunks, written into
+//!   an array the caller provides; [`sobol_fill`] is the Sobol part.
 //! * [`pixel`]: the renderer's pixel samplers, by catalog name.
 //! * [`metrics`]: discrepancies, distances and spectra of point arrays.
 //!
@@ -13,6 +14,7 @@
 pub mod metrics;
 pub mod pixel;
 pub mod points;
+pub mod sobol_fill;
 
 use core::fmt;
 
