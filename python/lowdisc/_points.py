@@ -90,8 +90,13 @@ def sampler_names() -> list[str]:
     return list(_lowdisc.sampler_names())
 
 
+#: The renderer's tile side in pixels (its default; ``lowdisc points --tile-size``).
+DEFAULT_TILE_SIZE: int = 16
+
+
 def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
-                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0) -> np.ndarray:
+                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0,
+                  tile_size: int = DEFAULT_TILE_SIZE) -> np.ndarray:
     """The samples the renderer's pixel sampler ``sampler`` gives ``pixels``.
 
     Returns a float32 array ``(len(pixels), spp, dims)``: for each pixel
@@ -99,8 +104,15 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
     index, columns 0-1 are the offset inside the pixel (``get_pixel_2d``),
     then ``get_2d`` pairs and, for an odd ``dims``, one last ``get_1d``: what
     ``lowdisc points --sampler NAME --pixel X,Y --spp SPP --res WxH
-    --dims DIMS-2`` prints (as film positions ``x + offset``). The
-    ``paper`` sampler's single stream starts afresh at each pixel.
+    --dims DIMS-2 --tile-size T`` prints (as film positions ``x + offset``).
+
+    The sampler is the renderer's: the full image is cut into square tiles
+    of ``tile_size`` pixels (the renderer's default 16), numbered row-major,
+    and each tile's index is its sampler stream. The ``paper`` sampler's
+    single stream is replayed from the tile's first pixel, row by row, each
+    earlier sample drawing ``dims`` values: the renderer's values exactly
+    when each of its camera samples drew ``dims`` values (always for the
+    tile's first sample).
     """
     if not isinstance(sampler, str):
         raise TypeError(f"sampler must be a name (str), got {type(sampler).__name__}")
@@ -124,6 +136,7 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
         np.ascontiguousarray(array, dtype=np.uint32),
         _checks.integer(dims, "dims", low=2, high=2**32 - 1),
         _checks.seed(seed),
+        _checks.integer(tile_size, "tile_size", low=1, high=4096),
     )
 
 

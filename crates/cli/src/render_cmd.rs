@@ -328,7 +328,7 @@ fn prepare(
             ..PathIntegrator::default()
         },
         threads: config.threads,
-        tile_size: 16,
+        tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
     };
     let output = config.output.clone().unwrap_or(output);
     check_output(&output)?;

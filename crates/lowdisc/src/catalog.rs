@@ -27,6 +27,7 @@
 //! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
 //! | `zsobol-joint` | Z-order Sobol, 4-D groups per path vertex | pixel (0,0) of a 1x1 image |
 
+pub mod pixel_rows;
 mod points;
 
 use core::fmt;
@@ -42,6 +43,7 @@ use crate::pixel::{
 use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
 
+pub use pixel_rows::{DEFAULT_TILE_SIZE, pixel_rows};
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
 
 /// The largest image side a configuration accepts.

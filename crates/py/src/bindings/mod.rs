@@ -72,6 +72,7 @@ fn points<'py>(
 /// The renderer's samples for `pixels` (an `(p, 2)` uint32 array of x, y), as
 /// a float32 array `(p, spp, dims)`.
 #[pyfunction]
+#[allow(clippy::too_many_arguments)]
 fn pixel_samples<'py>(
     py: Python<'py>,
     sampler: &str,
@@ -80,6 +81,7 @@ fn pixel_samples<'py>(
     pixels: &Bound<'py, PyAny>,
     dims: u32,
     seed: u64,
+    tile_size: u32,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let pixels: PyReadonlyArray2<u32> = arrays::contiguous_2d(pixels, "pixels")?;
     let shape = pixels.shape();
@@ -100,6 +102,7 @@ fn pixel_samples<'py>(
         pixels: list,
         dims,
         seed,
+        tile_size,
     };
     let values = py
         .detach(|| pixel::pixel_samples(&spec))

@@ -22,6 +22,29 @@ use core::fmt;
 /// small enough to spread a request over all cores.
 pub(crate) const CHUNK_VALUES: usize = 1 << 16;
 
+/// Runs `work` on `workers` threads (scipy's convention: -1 is every core,
+/// `k >= 1` a pool of `k` threads). The engine's parallel sums use fixed
+/// chunks added in a fixed order, so the result does not depend on it.
+pub fn with_workers<T: Send>(workers: i64, work: impl FnOnce() -> T + Send) -> Result<T> {
+    match workers {
+        -1 => Ok(work()),
+        k if k >= 1 => {
+            let threads = usize::try_from(k).unwrap_or(usize::MAX).min(MAX_WORKERS);
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .map_err(|e| EngineError::value(format!("cannot start {threads} threads: {e}")))?;
+            Ok(pool.install(work))
+        }
+        other => Err(EngineError::value(format!(
+            "Invalid number of workers: {other}, must be -1 or > 0"
+        ))),
+    }
+}
+
+/// The most threads `workers` starts (more than any machine's cores).
+pub const MAX_WORKERS: usize = 1024;
+
 /// What went wrong, and which Python exception it becomes.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum EngineError {
@@ -84,6 +107,26 @@ impl Dtype {
                 "dtype must be float64, float32 or uint32, got {other}"
             ))),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn workers_sets_the_thread_count() {
+        assert_eq!(with_workers(1, rayon::current_num_threads), Ok(1));
+        assert_eq!(with_workers(3, rayon::current_num_threads), Ok(3));
+        let all = rayon::current_num_threads();
+        assert_eq!(with_workers(-1, rayon::current_num_threads), Ok(all));
+        assert!(
+            with_workers(0, || ())
+                .unwrap_err()
+                .to_string()
+                .contains("must be -1 or > 0")
+        );
+        assert!(with_workers(-2, || ()).is_err());
     }
 }
 
