@@ -54,7 +54,7 @@ def sobol(n: int, d: int, *, start: int = 0, order: str = "gray",
     (Laine-Karras-style hash, nested but not exactly uniform) or
     ``"owen-per-digit"`` (the same scramble law with one hash per digit: the
     values of the renderer's ``sobol-owen`` sampler and of ``lowdisc points
-    --sampler sobol-owen``, about 3x slower). ``dtype`` float64 gives the
+    --sampler sobol-owen``, about 6x the instructions per value). ``dtype`` float64 gives the
     32-digit values exactly, float32 the 24 leading digits, uint32 the digit
     words ``floor(x * 2**32)``.
     """
