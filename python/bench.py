@@ -3,8 +3,11 @@ on one machine; prints a Markdown table (not a test: nothing is asserted).
 
     python python/bench.py            # the pinned versions: scripts/requirements-bench.txt
 
-Each figure is the best of ``--repeat`` runs (wall-clock, all cores allowed
-for every library).
+Each figure is the best and the median of ``--repeat`` rounds (wall-clock,
+all cores allowed for every library); the rounds of a row alternate between
+the libraries, so a change of the machine's load hits both. The first Sobol
+row is a floor for everyone: numpy filling a fresh 512 MiB float64 array
+(the page faults of the output, which every library pays).
 """
 
 from __future__ import annotations
@@ -12,6 +15,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import statistics
 import time
 
 import numpy as np
@@ -20,13 +24,23 @@ import lowdisc
 from lowdisc import qmc as lqmc
 
 
-def best(fn, repeat):
-    times = []
+def timed(fn):
+    t = time.perf_counter()
+    fn()
+    return time.perf_counter() - t
+
+
+def rounds(fns, repeat):
+    """Times of each function over ``repeat`` interleaved rounds."""
+    times = [[] for _ in fns]
     for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return min(times)
+        for fn, t in zip(fns, times):
+            t.append(timed(fn))
+    return times
+
+
+def cell(times):
+    return f"{min(times):.3f} / {statistics.median(times):.3f}"
 
 
 def main() -> None:
@@ -49,17 +63,21 @@ def main() -> None:
     n, d = 2**20, 64
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores; "
           f"numpy {np.__version__}, scipy {__import__('scipy').__version__}, "
-          f"qmcpy {getattr(qmcpy, '__version__', 'not installed')}; best of {args.repeat}")
+          f"qmcpy {getattr(qmcpy, '__version__', 'not installed')}; "
+          f"best / median of {args.repeat} rounds, load average {os.getloadavg()[0]:.1f}")
     print()
-    print("| task | lowdisc | s | other | s | speed-up |")
+    print("| task | lowdisc | s | other | s | speed-up (best, median) |")
     print("|---|---|---:|---|---:|---:|", flush=True)
 
     def row(task, ours_name, ours, theirs_name, theirs):
-        t_ours = best(ours, args.repeat)
-        t_theirs = best(theirs, args.repeat) if theirs is not None else None
-        ratio = f"{t_theirs / t_ours:.1f}x" if t_theirs else "-"
-        theirs_cell = f"{t_theirs:.3f}" if t_theirs else "-"
-        cells = (task, ours_name, f"{t_ours:.3f}", theirs_name, theirs_cell, ratio)
+        if theirs is None:
+            [t_ours] = rounds([ours], args.repeat)
+            cells = (task, ours_name, cell(t_ours), theirs_name, "-", "-")
+        else:
+            t_ours, t_theirs = rounds([ours, theirs], args.repeat)
+            ratio = (f"{min(t_theirs) / min(t_ours):.1f}x, "
+                     f"{statistics.median(t_theirs) / statistics.median(t_ours):.1f}x")
+            cells = (task, ours_name, cell(t_ours), theirs_name, cell(t_theirs), ratio)
         print("| " + " | ".join(cells) + " |", flush=True)
 
     task = f"Sobol d={d}, 2^20 points"
@@ -76,6 +94,10 @@ def main() -> None:
 
 
 def sobol_rows(row, task, n, d, qmc):
+    row(task, "(floor) `np.empty((n, d)).fill(0.5)`",
+        lambda: np.empty((n, d)).fill(0.5),
+        "scipy Sobol(scramble=False)",
+        lambda: qmc.Sobol(d, scramble=False).random(n))
     row(task, "lowdisc.qmc.Sobol(scramble=False)",
         lambda: lqmc.Sobol(d, scramble=False).random(n),
         "scipy Sobol(scramble=False)",
@@ -86,6 +108,10 @@ def sobol_rows(row, task, n, d, qmc):
         lambda: qmc.Sobol(d, seed=1).random(n))
     row(task, "lowdisc.qmc.Sobol (Owen)",
         lambda: lqmc.Sobol(d, seed=1).random(n),
+        "scipy Sobol(scramble=True) (LMS+shift)",
+        lambda: qmc.Sobol(d, seed=1).random(n))
+    row(task, "lowdisc.qmc.Sobol(randomize='owen-per-digit')",
+        lambda: lqmc.Sobol(d, seed=1, randomize="owen-per-digit").random(n),
         "scipy Sobol(scramble=True) (LMS+shift)",
         lambda: qmc.Sobol(d, seed=1).random(n))
     row(task, "lowdisc.qmc.Sobol(randomize='fast-owen')",

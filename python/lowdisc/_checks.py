@@ -78,7 +78,8 @@ def sample(sample: npt.ArrayLike, *, scipy_messages: bool = True) -> np.ndarray:
 
 def workers(value: Any) -> int:
     """scipy's ``workers``: -1 or a positive count."""
-    w = integer(value, "workers", low=-1)
-    if w == 0:
+    w = integer(value, "workers", low=-(2**63))
+    if w == 0 or w < -1:
         raise ValueError(f"Invalid number of workers: {w}, must be -1 or > 0")
-    return w
+    # More threads than any machine's cores gain nothing (the extension's cap).
+    return min(w, 1024)

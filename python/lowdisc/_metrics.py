@@ -3,10 +3,10 @@ with scipy's signatures and conventions, and what scipy lacks: the exact star
 discrepancy, star-discrepancy bounds, toroidal distances and the radial
 power spectrum.
 
-Samples are ``(n, d)`` arrays in the unit hypercube. The sums run on all
-cores in fixed chunks added in a fixed order, so every value is the same
-whatever the number of threads (``workers`` is accepted for scipy's sake
-and validated like scipy's).
+Samples are ``(n, d)`` arrays in the unit hypercube. The sums run in fixed
+chunks added in a fixed order, so every value is the same whatever the
+number of threads: ``discrepancy``'s ``workers`` (scipy's: -1 all cores, k
+threads) changes only the speed; the other metrics use all cores.
 """
 
 from __future__ import annotations
@@ -31,13 +31,15 @@ def discrepancy(sample: npt.ArrayLike, *, iterative: bool = False, method: str =
     as its square root. ``iterative=True`` normalises as if the sample had
     one more point (the start of ``scipy.stats.qmc.update_discrepancy``).
     Sums are compensated: at n = 4096, d = 8 the values agree with an
-    extended-precision evaluation to about 1e-12 relative."""
+    extended-precision evaluation to about 1e-12 relative. ``workers``: the
+    threads of the sums, as scipy's (-1: all cores); the value is the same
+    bits for every count."""
     x = _checks.sample(sample)
-    _checks.workers(workers)
+    workers = _checks.workers(workers)
     methods = ("CD", "WD", "MD", "L2-star")
     if method not in methods:
         raise ValueError(f"{method!r} is not a valid method. It must be one of {set(methods)!r}")
-    return _lowdisc.discrepancy(x, method, bool(iterative))
+    return _lowdisc.discrepancy(x, method, bool(iterative), workers)
 
 
 def geometric_discrepancy(sample: npt.ArrayLike, method: str = "mindist",

@@ -19,7 +19,7 @@ SOBOL_DIMENSIONS: int = _lowdisc.SOBOL_DIMENSIONS
 #: Dimensions of the Halton sequence (the first primes).
 HALTON_DIMENSIONS: int = _lowdisc.HALTON_DIMENSIONS
 
-SOBOL_SCRAMBLES = ("none", "xor", "owen", "fast-owen")
+SOBOL_SCRAMBLES = ("none", "xor", "owen", "fast-owen", "owen-per-digit")
 HALTON_SCRAMBLES = ("none", "permute", "owen")
 
 
@@ -48,8 +48,13 @@ def sobol(n: int, d: int, *, start: int = 0, order: str = "gray",
     ``scipy.stats.qmc.Sobol`` (unscrambled, the same numbers bit for bit);
     ``"natural"`` is Sobol's own (point k uses index k), as pbrt. The first
     ``2**m`` points are the same set in both. ``scramble``: ``"none"``,
-    ``"xor"`` (random digital shift), ``"owen"`` (exact nested uniform
-    scrambling) or ``"fast-owen"`` (hash-based). ``dtype`` float64 gives the
+    ``"xor"`` (random digital shift), ``"owen"`` (nested uniform scrambling,
+    exact in distribution: every digit is flipped by its own random tree
+    node, drawn 63 nodes per hash, so 3-4 hashes per value), ``"fast-owen"``
+    (Laine-Karras-style hash, nested but not exactly uniform) or
+    ``"owen-per-digit"`` (the same scramble law with one hash per digit: the
+    values of the renderer's ``sobol-owen`` sampler and of ``lowdisc points
+    --sampler sobol-owen``, about 6x the instructions per value). ``dtype`` float64 gives the
     32-digit values exactly, float32 the 24 leading digits, uint32 the digit
     words ``floor(x * 2**32)``.
     """
@@ -85,8 +90,13 @@ def sampler_names() -> list[str]:
     return list(_lowdisc.sampler_names())
 
 
+#: The renderer's tile side in pixels (its default; ``lowdisc points --tile-size``).
+DEFAULT_TILE_SIZE: int = 16
+
+
 def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
-                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0) -> np.ndarray:
+                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0,
+                  tile_size: int = DEFAULT_TILE_SIZE) -> np.ndarray:
     """The samples the renderer's pixel sampler ``sampler`` gives ``pixels``.
 
     Returns a float32 array ``(len(pixels), spp, dims)``: for each pixel
@@ -94,8 +104,15 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
     index, columns 0-1 are the offset inside the pixel (``get_pixel_2d``),
     then ``get_2d`` pairs and, for an odd ``dims``, one last ``get_1d``: what
     ``lowdisc points --sampler NAME --pixel X,Y --spp SPP --res WxH
-    --dims DIMS-2`` prints (as film positions ``x + offset``). The
-    ``paper`` sampler's single stream starts afresh at each pixel.
+    --dims DIMS-2 --tile-size T`` prints (as film positions ``x + offset``).
+
+    The sampler is the renderer's: the full image is cut into square tiles
+    of ``tile_size`` pixels (the renderer's default 16), numbered row-major,
+    and each tile's index is its sampler stream. The ``paper`` sampler's
+    single stream is replayed from the tile's first pixel, row by row, each
+    earlier sample drawing ``dims`` values: the renderer's values exactly
+    when each of its camera samples drew ``dims`` values (always for the
+    tile's first sample).
     """
     if not isinstance(sampler, str):
         raise TypeError(f"sampler must be a name (str), got {type(sampler).__name__}")
@@ -119,6 +136,7 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
         np.ascontiguousarray(array, dtype=np.uint32),
         _checks.integer(dims, "dims", low=2, high=2**32 - 1),
         _checks.seed(seed),
+        _checks.integer(tile_size, "tile_size", low=1, high=4096),
     )
 
 

@@ -8,8 +8,9 @@ methods is used), so they work with ``scipy.stats.qmc.scale``,
 Differences from scipy, by design:
 
 * ``scramble=True`` means lowdisc's **Owen** (nested uniform) scrambling by
-  default (``randomize="owen"``; also ``"fast-owen"``, ``"xor"``), not
-  scipy's linear matrix scramble plus digital shift.
+  default (``randomize="owen"``; also ``"owen-per-digit"``, ``"fast-owen"``,
+  ``"xor"``, as in :func:`lowdisc.sobol`), not scipy's linear matrix
+  scramble plus digital shift.
 * ``scramble=False`` gives exactly scipy's numbers for ``bits <= 32``;
   lowdisc's Sobol has 32 digits, so ``bits > 32`` raises ``ValueError``.
 * ``fast_forward`` is O(1): points are computed from their index.
@@ -88,8 +89,9 @@ class Sobol(_Base):
     """scipy.stats.qmc.Sobol with lowdisc's Sobol (Joe & Kuo, Gray-code order).
 
     ``randomize``: the scramble used when ``scramble=True``: ``"owen"``
-    (exact nested uniform), ``"fast-owen"`` (hash-based) or ``"xor"``
-    (random digital shift).
+    (nested uniform, exact in distribution, 3 hashes per value at 30 bits),
+    ``"owen-per-digit"`` (the same law, the renderer's ``sobol-owen``
+    values), ``"fast-owen"`` (hash-based) or ``"xor"`` (random digital shift).
     """
 
     MAXDIM: int = _lowdisc.SOBOL_DIMENSIONS
@@ -103,7 +105,8 @@ class Sobol(_Base):
         if bits > 32:
             raise ValueError(f"lowdisc's Sobol points have 32 digits: bits must be at most 32, "
                              f"got {bits}")
-        randomize = _checks.choice(randomize, "randomize", ("owen", "fast-owen", "xor"))
+        randomize = _checks.choice(randomize, "randomize",
+                                   ("owen", "owen-per-digit", "fast-owen", "xor"))
         # Used by scipy.integrate.qmc_quad to make independent copies.
         self._init_quad = {"d": d, "scramble": True, "bits": bits,
                            "optimization": optimization, "randomize": randomize}

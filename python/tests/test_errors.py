@@ -58,21 +58,21 @@ def test_bad_arguments_raise_clear_errors(call, error, message):
 def test_the_extension_checks_arrays_itself():
     x = np.random.default_rng(0).random((8, 4))
     with pytest.raises(ValueError, match="C-contiguous"):
-        _lowdisc.discrepancy(x[:, ::2], "CD", False)
+        _lowdisc.discrepancy(x[:, ::2], "CD", False, 1)
     with pytest.raises(TypeError, match="dtype float64, got float32"):
-        _lowdisc.discrepancy(x.astype(np.float32), "CD", False)
+        _lowdisc.discrepancy(x.astype(np.float32), "CD", False, 1)
     with pytest.raises(TypeError, match="must be a numpy array, got list"):
         _lowdisc.min_distance([[0.5]], "euclidean")
     with pytest.raises(ValueError, match="2-D array, got 1"):
         _lowdisc.star_discrepancy(x[0], 1e9)
     with pytest.raises(ValueError, match="not finite"):
-        _lowdisc.discrepancy(np.full((2, 2), np.nan), "CD", False)
+        _lowdisc.discrepancy(np.full((2, 2), np.nan), "CD", False, 1)
     with pytest.raises(ValueError, match="outside"):
         _lowdisc.star_discrepancy(np.full((2, 2), -1.0), 1e9)
     with pytest.raises(TypeError, match="dtype uint32"):
-        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 2), dtype=np.int64), 2, 0)
+        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 2), dtype=np.int64), 2, 0, 16)
     with pytest.raises(ValueError, match=r"shape \(p, 2\)"):
-        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 3), dtype=np.uint32), 2, 0)
+        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 3), dtype=np.uint32), 2, 0, 16)
     with pytest.raises(OverflowError):
         _lowdisc.points("sobol", -1, 2, 0, "gray", "none", 0, 32, "float64")
     with pytest.raises(ValueError, match="unknown sequence"):

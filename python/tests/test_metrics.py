@@ -136,3 +136,17 @@ def test_power_spectrum_of_white_noise_is_flat_near_one():
     # A Sobol net is far below white noise at low frequencies.
     _, sobol_power, _ = lowdisc.power_spectrum(lowdisc.sobol(4096, 2), max_frequency=32)
     assert sobol_power[:4].mean() < 0.1
+
+
+@pytest.mark.parametrize("method", ["CD", "WD", "MD", "L2-star"])
+def test_discrepancy_is_the_same_bits_for_every_worker_count(method):
+    # workers runs the sums on that many threads (-1: all cores); the chunks
+    # are fixed, so every count gives the same value bit for bit.
+    x = lowdisc.sobol(6000, 5, scramble="owen", seed=2)
+    values = {w: lowdisc.discrepancy(x, method=method, workers=w) for w in (1, 2, 3, -1)}
+    assert len(set(values.values())) == 1, values
+    assert (lowdisc.discrepancy(x, method=method, iterative=True, workers=1)
+            == lowdisc.discrepancy(x, method=method, iterative=True, workers=4))
+    for bad in (0, -2):
+        with pytest.raises(ValueError, match="Invalid number of workers"):
+            lowdisc.discrepancy(x, method=method, workers=bad)

@@ -40,22 +40,41 @@ def test_gray_and_natural_orders_give_the_same_first_2_to_the_m_points():
     assert np.array_equal(np.sort(gray, axis=0), np.sort(natural, axis=0))
 
 
-@pytest.mark.parametrize("scramble", ["owen", "fast-owen"])
+@pytest.mark.parametrize("scramble", ["owen", "owen-per-digit", "fast-owen"])
 def test_owen_scrambled_points_are_0_m_2_nets(scramble):
     # Sobol dimensions 0 and 1 form a (0, m, 2)-net, and nested scrambling
-    # keeps it: every 2^a x 2^(m-a) box holds exactly one point.
-    m = 10
-    x = lowdisc.sobol(2**m, 2, scramble=scramble, seed=11)
-    for a in range(m + 1):
-        cells = np.floor(x[:, 0] * 2**a) * 2 ** (m - a) + np.floor(x[:, 1] * 2 ** (m - a))
-        assert len(np.unique(cells)) == 2**m, a
+    # keeps it: every 2^a x 2^(m-a) box holds exactly one point, for every
+    # m <= 16 (the first 2^m points of one draw).
+    x = lowdisc.sobol(2**16, 2, scramble=scramble, seed=11, dtype=np.uint32).astype(np.int64)
+    for m in range(17):
+        for a in range(m + 1):
+            cells = (x[:2**m, 0] >> (32 - a)) << (m - a) | (x[:2**m, 1] >> (32 - (m - a)))
+            assert len(np.unique(cells)) == 2**m, (m, a)
+
+
+@pytest.mark.parametrize("scramble", ["owen", "owen-per-digit"])
+def test_owen_flips_depend_only_on_the_digits_before(scramble):
+    # Nested: output digit b is input digit b XOR a flip that depends only on
+    # digits 0..b-1, so two points sharing b leading digits share them after
+    # scrambling and differ at digit b exactly when their inputs do.
+    plain = lowdisc.sobol(4096, 3, dtype=np.uint32).astype(np.int64)
+    scrambled = lowdisc.sobol(4096, 3, scramble=scramble, seed=8, dtype=np.uint32).astype(np.int64)
+    rng = np.random.default_rng(0)
+    i, k = rng.integers(0, 4096, size=(2, 5000))
+    for b in range(32):
+        share = (plain[i] >> (32 - b)) == (plain[k] >> (32 - b)) if b else np.ones((5000, 3), bool)
+        flip_i = ((plain[i] ^ scrambled[i]) >> (31 - b)) & 1
+        flip_k = ((plain[k] ^ scrambled[k]) >> (31 - b)) & 1
+        assert np.array_equal(flip_i[share], flip_k[share]), b
 
 
 def test_owen_scrambled_points_are_uniform_over_seeds():
-    # Each point of a nested uniform scramble is uniform in [0,1)^d: the
-    # mean of point 0 over 400 seeds is near 1/2 (4 standard errors).
-    first = np.array([lowdisc.sobol(1, 3, scramble="owen", seed=s)[0] for s in range(400)])
-    assert np.all(np.abs(first.mean(axis=0) - 0.5) < 4 * np.sqrt(1 / 12 / 400))
+    # Each point of a nested uniform scramble is uniform in [0,1)^d: over
+    # 2000 seeds, the mean of points 0 and 77 is near 1/2 and the variance
+    # near 1/12 (5 standard errors).
+    x = np.array([lowdisc.sobol(78, 3, scramble="owen", seed=s)[[0, 77]] for s in range(2000)])
+    assert np.all(np.abs(x.mean(axis=0) - 0.5) < 5 * np.sqrt(1 / 12 / 2000))
+    assert np.all(np.abs(x.var(axis=0) - 1 / 12) < 5 * np.sqrt(1 / 180 / 2000))
     # And the scramble changes with the seed.
     assert not np.array_equal(lowdisc.sobol(8, 2, scramble="owen", seed=1),
                               lowdisc.sobol(8, 2, scramble="owen", seed=2))
@@ -96,25 +115,44 @@ def test_qmcpy_reproduces_lowdiscs_sobol_from_the_exported_matrices():
                           lowdisc.sobol(256, 5, order="natural"))
 
 
-def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed):
+def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed, tile_size):
+    tiles = [] if tile_size is None else ["--tile-size", str(tile_size)]
     out = subprocess.run(
         [str(binary), "points", "--sampler", sampler, "--pixel", f"{pixel[0]},{pixel[1]}",
          "--spp", str(spp), "--res", f"{res[0]}x{res[1]}", "--dims", str(extra),
-         "--seed", str(seed)],
+         "--seed", str(seed), *tiles],
         check=True, capture_output=True, text=True).stdout
     return np.array([[float(v) for v in line.split()] for line in out.splitlines()])
 
 
+@pytest.mark.parametrize("tile_size", [None, 4])
 @pytest.mark.parametrize("sampler", lowdisc.sampler_names())
-def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, sampler):
-    pixels = [(0, 0), (5, 2), (2, 3)]
-    got = lowdisc.pixel_samples(sampler, 16, (6, 4), pixels, 7, seed=3)
-    assert got.shape == (3, 16, 7) and got.dtype == np.float32
+def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, sampler,
+                                                                    tile_size):
+    # Pixels in the first, a middle and the last (clipped) tile of the
+    # renderer's grid, at the default tile size and at 4.
+    pixels = [(0, 0), (5, 2), (17, 3), (39, 19)]
+    tiles = {} if tile_size is None else {"tile_size": tile_size}
+    got = lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, seed=3, **tiles)
+    assert got.shape == (4, 8, 7) and got.dtype == np.float32
     for p, pixel in enumerate(pixels):
-        rows = cli_pixel_rows(lowdisc_bin, sampler, pixel, 16, (6, 4), 5, 3)
+        rows = cli_pixel_rows(lowdisc_bin, sampler, pixel, 8, (40, 20), 5, 3, tile_size)
         expected = rows.copy()
         expected[:, :2] -= pixel  # the CLI prints film positions
         assert np.array_equal(got[p].astype(np.float64), expected), (sampler, pixel)
+
+
+def test_the_paper_stream_is_the_tiles_not_the_pixels_own():
+    # The literal stream is re-seeded per tile and runs through the tile's
+    # pixels: a pixel's values change with the tile size, and the first
+    # pixel of a tile starts the tile's stream (which differs per tile).
+    a = lowdisc.pixel_samples("paper", 4, (32, 32), [(1, 0)], 6, seed=2)
+    b = lowdisc.pixel_samples("paper", 4, (32, 32), [(1, 0)], 6, seed=2, tile_size=1)
+    assert not np.array_equal(a, b)
+    first = lowdisc.pixel_samples("paper", 4, (32, 32), [(0, 0), (16, 0)], 6, seed=2)
+    assert not np.array_equal(first[0, :, 2:], first[1, :, 2:])
+    with pytest.raises(ValueError, match="tile_size"):
+        lowdisc.pixel_samples("paper", 4, (32, 32), [(0, 0)], 6, tile_size=0)
 
 
 def test_every_catalog_sampler_is_available():

@@ -45,9 +45,31 @@ def test_scrambling_is_owen_and_reproducible():
     fast = qmc.Sobol(4, seed=7, randomize="fast-owen").random(256)
     assert np.array_equal(fast, lowdisc.sobol(256, 4, scramble="fast-owen", seed=7)
                           // 2.0**-30 * 2.0**-30)
+    per_digit = qmc.Sobol(4, seed=7, randomize="owen-per-digit").random(256)
+    assert np.array_equal(per_digit, lowdisc.sobol(256, 4, scramble="owen-per-digit", seed=7)
+                          // 2.0**-30 * 2.0**-30)
     g1 = qmc.Sobol(3, rng=np.random.default_rng(5)).random(16)
     g2 = qmc.Sobol(3, rng=np.random.default_rng(5)).random(16)
     assert np.array_equal(g1, g2)
+
+
+@pytest.mark.parametrize("randomize", ["owen", "owen-per-digit", "fast-owen", "xor"])
+def test_random_streams_and_fast_forward_jumps(randomize):
+    # random(n) twice is random(2n); fast_forward(k) then random(m) is the
+    # window k..k+m of one long draw, at any k (the call does no work).
+    whole = qmc.Sobol(6, seed=3, randomize=randomize).random(4096)
+    engine = qmc.Sobol(6, seed=3, randomize=randomize)
+    assert np.array_equal(np.vstack([engine.random(2048), engine.random(2048)]), whole)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for k, m in [(1, 5), (1000, 3000), (2**29 - 7, 7)]:
+            jumped = qmc.Sobol(6, seed=3, randomize=randomize).fast_forward(k)
+            window = jumped.random(m)
+            assert jumped.num_generated == k + m
+            want = lowdisc.sobol(m, 6, start=k, scramble=randomize, seed=3) // 2.0**-30 * 2.0**-30
+            assert np.array_equal(window, want)
+            if k + m <= 4096:
+                assert np.array_equal(window, whole[k:k + m])
 
 
 def test_scipys_power_of_two_warning_and_errors():

@@ -28,6 +28,7 @@
 //! | `zsobol-joint` | Z-order Sobol, 4-D groups per path vertex | pixel (0,0) of a 1x1 image |
 //! | `zorder-sz` | Z-order base-4 (0,4)-sequence, film x light in 5-D | pixel (0,0) of a 1x1 image |
 
+pub mod pixel_rows;
 mod points;
 
 use core::fmt;
@@ -43,6 +44,7 @@ use crate::pixel::{
 use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
 
+pub use pixel_rows::{DEFAULT_TILE_SIZE, pixel_rows};
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
 
 /// The largest image side a configuration accepts.

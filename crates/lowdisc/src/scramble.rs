@@ -28,9 +28,11 @@
 
 mod cache;
 pub mod lms;
+pub mod owen_tree;
 
 pub use cache::{PreparedKey, ScrambleCache};
 pub use lms::{LmsKey, lms_scramble};
+pub use owen_tree::OwenTreeKey;
 
 use crate::hash::{hash2, mix64};
 

@@ -115,7 +115,7 @@ pub(super) fn prepare(
             ..PathIntegrator::default()
         },
         threads: config.threads,
-        tile_size: 16,
+        tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
         window: config.window,
         samples: config.samples,
         spectral: config.spectral,

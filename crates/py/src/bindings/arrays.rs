@@ -2,13 +2,13 @@
 //! numpy outputs of engine values.
 
 use numpy::{
-    Element, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArray,
-    PyUntypedArrayMethods,
+    Element, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
-use crate::engine::{EngineError, Values};
+use crate::engine::points::{self, Output, PointSpec};
+use crate::engine::{Dtype, EngineError};
 
 /// The Python exception of an engine error.
 pub fn engine_error(e: EngineError) -> PyErr {
@@ -64,11 +64,41 @@ pub fn slice<'a, T: Element>(array: &'a PyReadonlyArray2<'_, T>) -> PyResult<&'a
         .map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// Engine values as an `(n, d)` array of their type.
-pub fn values_2d(py: Python<'_>, values: Values, n: usize, d: usize) -> PyResult<Bound<'_, PyAny>> {
-    Ok(match values {
-        Values::F64(v) => PyArray1::from_vec(py, v).reshape([n, d])?.into_any(),
-        Values::F32(v) => PyArray1::from_vec(py, v).reshape([n, d])?.into_any(),
-        Values::U32(v) => PyArray1::from_vec(py, v).reshape([n, d])?.into_any(),
-    })
+/// The `(n, d)` array of a point request, allocated by numpy (whose
+/// allocator asks the kernel for huge pages for large arrays, which makes the
+/// first write to each page much cheaper) and filled in place with the GIL
+/// released.
+pub fn filled_2d<'py>(
+    py: Python<'py>,
+    spec: &PointSpec,
+    n: usize,
+    d: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    fn fill<'py, T: Element + Send>(
+        py: Python<'py>,
+        spec: &PointSpec,
+        shape: [usize; 2],
+    ) -> PyResult<Bound<'py, PyAny>>
+    where
+        for<'a> &'a mut [T]: Into<Output<'a>>,
+    {
+        // Refuse a bad request before numpy allocates anything for it.
+        points::check_request(spec).map_err(engine_error)?;
+        let array = PyArray2::<T>::zeros(py, shape, false);
+        {
+            let mut view = array.readwrite();
+            let values = view
+                .as_slice_mut()
+                .map_err(|e| PyValueError::new_err(e.to_string()))?;
+            py.detach(|| points::generate_into(spec, values.into()))
+                .map_err(engine_error)?;
+        }
+        Ok(array.into_any())
+    }
+    let shape = [n, d];
+    match spec.dtype {
+        Dtype::F64 => fill::<f64>(py, spec, shape),
+        Dtype::F32 => fill::<f32>(py, spec, shape),
+        Dtype::U32 => fill::<u32>(py, spec, shape),
+    }
 }

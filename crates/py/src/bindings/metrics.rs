@@ -14,18 +14,23 @@ fn sample<'py>(obj: &Bound<'py, PyAny>) -> PyResult<(PyReadonlyArray2<'py, f64>,
     Ok((array, d))
 }
 
-/// SciPy's L2-type discrepancy `method` of `sample`.
+/// SciPy's L2-type discrepancy `method` of `sample`, on `workers` threads
+/// (-1: all cores).
 #[pyfunction]
 fn discrepancy(
     py: Python<'_>,
     sample: &Bound<'_, PyAny>,
     method: &str,
     iterative: bool,
+    workers: i64,
 ) -> PyResult<f64> {
     let (array, d) = self::sample(sample)?;
     let x = slice(&array)?;
-    py.detach(|| metrics::discrepancy(x, d, method, iterative))
-        .map_err(engine_error)
+    py.detach(|| {
+        crate::engine::with_workers(workers, || metrics::discrepancy(x, d, method, iterative))
+            .and_then(|r| r)
+    })
+    .map_err(engine_error)
 }
 
 /// The exact star discrepancy, refused above `max_work` estimated operations.

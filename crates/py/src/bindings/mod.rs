@@ -15,10 +15,10 @@ use numpy::{
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use crate::engine::Dtype;
 use crate::engine::pixel::{self, PixelSpec};
 use crate::engine::points::{self as sequences, PointSpec, Sequence};
-use crate::engine::{Dtype, Values};
-use arrays::{engine_error, values_2d};
+use arrays::engine_error;
 
 /// The sequence called `name`.
 fn sequence(name: &str) -> PyResult<Sequence> {
@@ -66,15 +66,13 @@ fn points<'py>(
         bits,
         dtype: Dtype::from_name(dtype).map_err(engine_error)?,
     };
-    let values: Values = py
-        .detach(|| sequences::generate(&spec))
-        .map_err(engine_error)?;
-    values_2d(py, values, n as usize, d as usize)
+    arrays::filled_2d(py, &spec, n as usize, d as usize)
 }
 
 /// The renderer's samples for `pixels` (an `(p, 2)` uint32 array of x, y), as
 /// a float32 array `(p, spp, dims)`.
 #[pyfunction]
+#[allow(clippy::too_many_arguments)]
 fn pixel_samples<'py>(
     py: Python<'py>,
     sampler: &str,
@@ -83,6 +81,7 @@ fn pixel_samples<'py>(
     pixels: &Bound<'py, PyAny>,
     dims: u32,
     seed: u64,
+    tile_size: u32,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let pixels: PyReadonlyArray2<u32> = arrays::contiguous_2d(pixels, "pixels")?;
     let shape = pixels.shape();
@@ -103,6 +102,7 @@ fn pixel_samples<'py>(
         pixels: list,
         dims,
         seed,
+        tile_size,
     };
     let values = py
         .detach(|| pixel::pixel_samples(&spec))

@@ -3,7 +3,8 @@
 //! their arguments first (so nothing below can panic on bad input).
 //!
 //! * [`points`]: sequences (Sobol, Halton, independent, stratified) as digit
-//!   words or floats, from any start index, in parallel chunks.
+//!   words or floats, from any start index, in parallel chunks, written into
+//!   an array the caller provides; [`sobol_fill`] is the Sobol part.
 //! * [`pixel`]: the renderer's pixel samplers, by catalog name.
 //! * [`metrics`]: discrepancies, distances and spectra of point arrays.
 //!
@@ -13,12 +14,36 @@
 pub mod metrics;
 pub mod pixel;
 pub mod points;
+pub mod sobol_fill;
 
 use core::fmt;
 
 /// Values per parallel work item: large enough to amortise a chunk's set-up,
 /// small enough to spread a request over all cores.
 pub(crate) const CHUNK_VALUES: usize = 1 << 16;
+
+/// Runs `work` on `workers` threads (scipy's convention: -1 is every core,
+/// `k >= 1` a pool of `k` threads). The engine's parallel sums use fixed
+/// chunks added in a fixed order, so the result does not depend on it.
+pub fn with_workers<T: Send>(workers: i64, work: impl FnOnce() -> T + Send) -> Result<T> {
+    match workers {
+        -1 => Ok(work()),
+        k if k >= 1 => {
+            let threads = usize::try_from(k).unwrap_or(usize::MAX).min(MAX_WORKERS);
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .map_err(|e| EngineError::value(format!("cannot start {threads} threads: {e}")))?;
+            Ok(pool.install(work))
+        }
+        other => Err(EngineError::value(format!(
+            "Invalid number of workers: {other}, must be -1 or > 0"
+        ))),
+    }
+}
+
+/// The most threads `workers` starts (more than any machine's cores).
+pub const MAX_WORKERS: usize = 1024;
 
 /// What went wrong, and which Python exception it becomes.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -82,6 +107,26 @@ impl Dtype {
                 "dtype must be float64, float32 or uint32, got {other}"
             ))),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn workers_sets_the_thread_count() {
+        assert_eq!(with_workers(1, rayon::current_num_threads), Ok(1));
+        assert_eq!(with_workers(3, rayon::current_num_threads), Ok(3));
+        let all = rayon::current_num_threads();
+        assert_eq!(with_workers(-1, rayon::current_num_threads), Ok(all));
+        assert!(
+            with_workers(0, || ())
+                .unwrap_err()
+                .to_string()
+                .contains("must be -1 or > 0")
+        );
+        assert!(with_workers(-2, || ()).is_err());
     }
 }
 

@@ -1,26 +1,30 @@
 //! The renderer's pixel samplers, by catalog name: the values a renderer
 //! would draw for given pixels, so they can be studied outside it.
 //!
-//! For each pixel and each sample index `0..spp` (in order), a fresh copy of
-//! the configured sampler starts the sample at dimension 0 and the row is:
+//! For each pixel and each sample index `0..spp` (in order) the row is:
 //! columns 0-1 the in-pixel offset (`get_pixel_2d`), then `get_2d` pairs and,
-//! for an odd last column, one `get_1d`. This is exactly what
-//! `lowdisc points --sampler NAME --pixel X,Y --spp N --res WxH --dims D-2`
-//! prints (as film positions `X + offset`). Every sampler's values depend
-//! only on (configuration, pixel, index, dimension), except the paper's
-//! literal one (`paper`), whose single stream starts afresh for each pixel
-//! here and in `lowdisc points` (the renderer re-seeds it per tile).
+//! for an odd last column, one `get_1d`, from the sampler as the renderer
+//! uses it: the stream of the pixel's tile in the full image's grid of
+//! `tile_size` tiles ([`lowdisc::catalog::pixel_rows`]; the paper's literal
+//! stream is replayed from the tile's first pixel). This is exactly what
+//! `lowdisc points --sampler NAME --pixel X,Y --spp N --res WxH --dims D-2
+//! --tile-size T` prints (as film positions `X + offset`).
 
 use core::str::FromStr;
 
+use lowdisc::catalog::pixel_rows::{pixel_draws, pixel_rows};
 use lowdisc::catalog::{MAX_POINT_WORDS, SamplerConfig, SamplerName};
-use lowdisc::pixel::PixelSampler;
 use rayon::prelude::*;
 
 use super::{EngineError, Result};
 
 /// The most values of a sample after the pixel offset (as `lowdisc points`).
 pub const MAX_EXTRA_DIMS: u32 = 1 << 16;
+/// The largest tile side (the renderer's limit).
+pub const MAX_TILE_SIZE: u32 = 4096;
+/// The most sampler draws of one request, the paper stream's replays
+/// included.
+pub const MAX_DRAWS: u64 = 1 << 32;
 
 /// The names of every pixel sampler, in the catalog's order.
 pub fn sampler_names() -> Vec<&'static str> {
@@ -42,6 +46,8 @@ pub struct PixelSpec {
     pub dims: u32,
     /// Seed of every random choice.
     pub seed: u64,
+    /// Side of the renderer's square tiles (whose index is the stream).
+    pub tile_size: u32,
 }
 
 /// The samples of `spec`, `pixels x spp x dims` values (row-major).
@@ -77,12 +83,28 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
             p[0], p[1]
         )));
     }
+    if spec.tile_size == 0 || spec.tile_size > MAX_TILE_SIZE {
+        return Err(EngineError::value(format!(
+            "tile_size must be between 1 and {MAX_TILE_SIZE}, got {}",
+            spec.tile_size
+        )));
+    }
     let row = spec.dims as usize;
     let per_pixel = spec.spp as usize * row;
     let total = (spec.pixels.len() as u64).saturating_mul(per_pixel as u64);
     if total > MAX_POINT_WORDS {
         return Err(EngineError::value(format!(
             "pixels * spp * dims = {total} exceeds {MAX_POINT_WORDS} values; ask in batches"
+        )));
+    }
+    let draws = spec.pixels.iter().fold(0u64, |sum, &p| {
+        sum.saturating_add(pixel_draws(&config, p, spec.dims, spec.tile_size))
+    });
+    if draws > MAX_DRAWS {
+        return Err(EngineError::value(format!(
+            "the request needs {draws} sampler draws (the {} stream is replayed from each \
+             pixel's tile start), over {MAX_DRAWS}: lower tile_size or ask for fewer pixels",
+            spec.sampler
         )));
     }
     let mut out = vec![0f32; total as usize];
@@ -92,20 +114,12 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
     out.par_chunks_mut(per_pixel)
         .zip(spec.pixels.par_iter())
         .for_each(|(block, &pixel)| {
-            let mut s = sampler.clone();
-            for (index, values) in (0..spec.spp).zip(block.chunks_exact_mut(row)) {
-                s.start_pixel_sample(pixel, index, 0);
-                let [ox, oy] = s.get_pixel_2d();
-                values[0] = ox;
-                values[1] = oy;
-                let mut rest = values[2..].chunks_exact_mut(2);
-                for pair in &mut rest {
-                    pair.copy_from_slice(&s.get_2d());
+            let mut rows = block.chunks_exact_mut(row);
+            pixel_rows(&config, &sampler, pixel, row, spec.tile_size, |r| {
+                if let Some(dst) = rows.next() {
+                    dst.copy_from_slice(r);
                 }
-                if let [last] = rest.into_remainder() {
-                    *last = s.get_1d();
-                }
-            }
+            });
         });
     Ok(out)
 }
@@ -113,6 +127,7 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lowdisc::pixel::PixelSampler;
 
     fn spec(sampler: &str, pixels: Vec<[u32; 2]>, dims: u32) -> PixelSpec {
         PixelSpec {
@@ -122,18 +137,20 @@ mod tests {
             pixels,
             dims,
             seed: 5,
+            tile_size: 16,
         }
     }
 
     #[test]
     fn rows_are_the_calls_a_renderer_makes() {
-        for name in sampler_names() {
+        // The paper's stream depends on the pixels before (its own test).
+        for name in sampler_names().into_iter().filter(|&n| n != "paper") {
             let got = pixel_samples(&spec(name, vec![[1, 2], [3, 0]], 5)).unwrap();
             assert_eq!(got.len(), 2 * 8 * 5);
             let mut config = SamplerConfig::new(name.parse().unwrap());
             (config.seed, config.spp, config.resolution) = (5, 8, [4, 3]);
             for (p, pixel) in [[1u32, 2], [3, 0]].into_iter().enumerate() {
-                let mut s = config.build().unwrap();
+                let mut s = config.build().unwrap().with_stream(0);
                 for index in 0..8 {
                     s.start_pixel_sample(pixel, index, 0);
                     let [a, b] = s.get_pixel_2d();
@@ -144,6 +161,22 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn the_paper_stream_is_its_tiles_replayed() {
+        let mut config = SamplerConfig::new(SamplerName::Paper);
+        (config.seed, config.spp, config.resolution) = (5, 8, [4, 3]);
+        let s = config.build().unwrap();
+        let mut want = Vec::new();
+        pixel_rows(&config, &s, [3, 0], 4, 16, |r| want.extend_from_slice(r));
+        assert_eq!(
+            pixel_samples(&spec("paper", vec![[3, 0]], 4)).unwrap(),
+            want
+        );
+        let mut one = spec("paper", vec![[3, 0]], 4);
+        one.tile_size = 1;
+        assert_ne!(pixel_samples(&one).unwrap(), want);
     }
 
     #[test]
@@ -161,6 +194,9 @@ mod tests {
         assert!(err(spec("nope", vec![], 2)).contains("unknown sampler \"nope\""));
         assert!(err(spec("sobol", vec![[4, 0]], 2)).contains("outside the 4x3 image"));
         assert!(err(spec("sobol", vec![], 1)).contains("dims must be between 2"));
+        let mut tiles = spec("sobol", vec![], 2);
+        tiles.tile_size = 0;
+        assert!(err(tiles).contains("tile_size must be between 1 and 4096"));
         let mut zero = spec("halton", vec![], 2);
         zero.spp = 0;
         assert!(err(zero).contains("at least one sample per pixel"));

@@ -7,23 +7,21 @@
 //! points computed in parallel; every value depends only on its index and
 //! dimension, so results do not depend on the thread count.
 
-use core::str::FromStr;
-
-use lowdisc::catalog::{MAX_POINT_WORDS, SamplerName};
+use lowdisc::catalog::MAX_POINT_WORDS;
 use lowdisc::halton::{self, Halton, HaltonRandomize};
 use lowdisc::independent::Independent;
-use lowdisc::scramble::RandomizeStrategy;
-use lowdisc::scramble::ScrambleCache;
-use lowdisc::sobol::{self, GrayCodeBatch};
+use lowdisc::sobol;
 use lowdisc::stratified;
 use rayon::prelude::*;
 
+use super::sobol_fill::{self, Scrambler, SobolRange};
 use super::{CHUNK_VALUES, Dtype, EngineError, Result, Values};
 
 /// Which sequence a request asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Sequence {
-    /// Sobol; scrambles `none`, `xor`, `owen`, `fast-owen`.
+    /// Sobol; scrambles `none`, `xor`, `owen` ([`lowdisc::scramble::OwenTreeKey`]),
+    /// `fast-owen`, `owen-per-digit` (the catalog's `sobol-owen` values).
     Sobol,
     /// Halton; scrambles `none`, `permute`, `owen`.
     Halton,
@@ -64,55 +62,131 @@ pub const HALTON_DIMENSIONS: u32 = halton::NUM_DIMENSIONS;
 
 /// The points of `spec`, point-major (`n * d` values).
 pub fn generate(spec: &PointSpec) -> Result<Values> {
-    check(spec)?;
-    let (n, d) = (spec.n as usize, spec.d as usize);
-    let values = match spec.sequence {
-        Sequence::Sobol => {
-            let r = sobol_strategy(&spec.scramble)?;
-            let mask = u32::MAX << (32 - spec.bits);
-            match spec.dtype {
-                Dtype::F64 => Values::F64(sobol(spec, r, |w| lowdisc::to_f64(w & mask))),
-                Dtype::F32 => Values::F32(sobol(spec, r, |w| lowdisc::to_f32(w & mask))),
-                Dtype::U32 => Values::U32(sobol(spec, r, |w| w & mask)),
-            }
-        }
-        Sequence::Halton => {
-            let kind = HaltonRandomize::from_name(&spec.scramble).ok_or_else(|| {
-                EngineError::value(format!(
-                    "Halton scramble must be 'none', 'permute' or 'owen', got {:?}",
-                    spec.scramble
-                ))
-            })?;
-            let seq = Halton::new(kind, spec.seed);
-            match spec.dtype {
-                Dtype::F64 => Values::F64(chunked(n, d, spec.start, |k, j| seq.sample(k, j))),
-                dtype => {
-                    let words = chunked(n, d, spec.start, |k, j| seq.sample_word(k, j));
-                    from_words(words, u32::MAX, dtype)
-                }
-            }
-        }
-        Sequence::Independent => {
-            no_scramble(spec)?;
-            let seq = Independent::new(spec.seed);
-            let words = chunked(n, d, spec.start, |k, j| seq.sample_u32(u64::from(j), k));
-            from_words(words, u32::MAX, spec.dtype)
-        }
-        Sequence::Stratified => {
-            no_scramble(spec)?;
-            let x = stratified::jittered_points(spec.n as u32, spec.d, spec.seed);
-            match spec.dtype {
-                Dtype::F64 => Values::F64(x),
-                Dtype::F32 => Values::F32(x.iter().map(|&v| lowdisc::to_f32(word_of(v))).collect()),
-                Dtype::U32 => Values::U32(x.iter().map(|&v| word_of(v)).collect()),
-            }
-        }
+    let len = check_request(spec)?;
+    let mut values = match spec.dtype {
+        Dtype::F64 => Values::F64(vec![0.0; len]),
+        Dtype::F32 => Values::F32(vec![0.0; len]),
+        Dtype::U32 => Values::U32(vec![0; len]),
     };
+    let out = match &mut values {
+        Values::F64(v) => Output::from(&mut v[..]),
+        Values::F32(v) => Output::from(&mut v[..]),
+        Values::U32(v) => Output::from(&mut v[..]),
+    };
+    generate_into(spec, out)?;
     Ok(values)
 }
 
-/// Checks every field of `spec` against the sequence's ranges.
-fn check(spec: &PointSpec) -> Result<()> {
+/// An array to write a request's values into: `n * d` of the request's dtype.
+#[derive(Debug)]
+pub enum Output<'a> {
+    /// `float64` values.
+    F64(&'a mut [f64]),
+    /// `float32` values.
+    F32(&'a mut [f32]),
+    /// `uint32` digit words.
+    U32(&'a mut [u32]),
+}
+
+impl<'a> From<&'a mut [f64]> for Output<'a> {
+    fn from(values: &'a mut [f64]) -> Self {
+        Output::F64(values)
+    }
+}
+
+impl<'a> From<&'a mut [f32]> for Output<'a> {
+    fn from(values: &'a mut [f32]) -> Self {
+        Output::F32(values)
+    }
+}
+
+impl<'a> From<&'a mut [u32]> for Output<'a> {
+    fn from(values: &'a mut [u32]) -> Self {
+        Output::U32(values)
+    }
+}
+
+impl Output<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Output::F64(o) => o.len(),
+            Output::F32(o) => o.len(),
+            Output::U32(o) => o.len(),
+        }
+    }
+
+    fn dtype(&self) -> Dtype {
+        match self {
+            Output::F64(_) => Dtype::F64,
+            Output::F32(_) => Dtype::F32,
+            Output::U32(_) => Dtype::U32,
+        }
+    }
+}
+
+/// Writes the points of `spec` into `out` (point-major, `n * d` values of
+/// `spec.dtype`), so the caller chooses where the array lives.
+pub fn generate_into(spec: &PointSpec, out: Output<'_>) -> Result<()> {
+    let len = check_request(spec)?;
+    if out.len() != len || out.dtype() != spec.dtype {
+        return Err(EngineError::value(format!(
+            "the output must hold n * d = {len} values of {:?}, got {} of {:?}",
+            spec.dtype,
+            out.len(),
+            out.dtype()
+        )));
+    }
+    let d = spec.d as usize;
+    match spec.sequence {
+        Sequence::Sobol => {
+            let scrambler = Scrambler::new(&spec.scramble, spec.seed, spec.d)?;
+            let range = SobolRange {
+                start: spec.start,
+                d,
+                natural_order: spec.natural_order,
+                digits: spec.bits,
+            };
+            match out {
+                Output::F64(o) => sobol_fill::fill(o, range, &scrambler, lowdisc::to_f64),
+                Output::F32(o) => sobol_fill::fill(o, range, &scrambler, lowdisc::to_f32),
+                Output::U32(o) => sobol_fill::fill(o, range, &scrambler, |w| w),
+            }
+        }
+        Sequence::Halton => {
+            let seq = Halton::new(halton_kind(spec)?, spec.seed);
+            match out {
+                Output::F64(o) => chunked(o, d, spec.start, |k, j| seq.sample(k, j)),
+                other => store_words(other, d, spec.start, |k, j| seq.sample_word(k, j)),
+            }
+        }
+        Sequence::Independent => {
+            let seq = Independent::new(spec.seed);
+            store_words(out, d, spec.start, |k, j| seq.sample_u32(u64::from(j), k));
+        }
+        Sequence::Stratified => {
+            let x = stratified::jittered_points(spec.n as u32, spec.d, spec.seed);
+            match out {
+                Output::F64(o) => o.copy_from_slice(&x),
+                Output::F32(o) => o
+                    .iter_mut()
+                    .zip(&x)
+                    .for_each(|(o, &v)| *o = lowdisc::to_f32(word_of(v))),
+                Output::U32(o) => o.iter_mut().zip(&x).for_each(|(o, &v)| *o = word_of(v)),
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Checks every field of `spec` against the sequence's ranges and names (so
+/// a caller can do it before allocating the output); the number of values,
+/// `n * d`.
+pub fn check_request(spec: &PointSpec) -> Result<usize> {
+    match spec.sequence {
+        Sequence::Sobol => Scrambler::check_name(&spec.scramble)?,
+        Sequence::Halton => halton_kind(spec).map(|_| ())?,
+        Sequence::Independent | Sequence::Stratified => no_scramble(spec)?,
+    }
     if spec.d == 0 {
         return Err(EngineError::value("d must be at least 1"));
     }
@@ -163,7 +237,17 @@ fn check(spec: &PointSpec) -> Result<()> {
         }
         _ => {}
     }
-    Ok(())
+    Ok((spec.n * u64::from(spec.d)) as usize)
+}
+
+/// The Halton randomization of `spec`'s scramble name.
+fn halton_kind(spec: &PointSpec) -> Result<HaltonRandomize> {
+    HaltonRandomize::from_name(&spec.scramble).ok_or_else(|| {
+        EngineError::value(format!(
+            "Halton scramble must be 'none', 'permute' or 'owen', got {:?}",
+            spec.scramble
+        ))
+    })
 }
 
 fn no_scramble(spec: &PointSpec) -> Result<()> {
@@ -176,111 +260,33 @@ fn no_scramble(spec: &PointSpec) -> Result<()> {
     Ok(())
 }
 
-/// The randomization strategy of the catalog's `sobol*` sampler of that
-/// scramble (the seed is passed beside it).
-pub fn sobol_strategy(scramble: &str) -> Result<RandomizeStrategy> {
-    let name = match scramble {
-        "none" => "sobol",
-        "xor" => "sobol-xor",
-        "owen" => "sobol-owen",
-        "fast-owen" => "sobol-fast-owen",
-        other => {
-            return Err(EngineError::value(format!(
-                "Sobol scramble must be 'none', 'xor', 'owen' or 'fast-owen', got {other:?}"
-            )));
-        }
-    };
-    SamplerName::from_str(name)?
-        .sobol_strategy()
-        .ok_or_else(|| EngineError::value(format!("{name} is not a Sobol randomization")))
-}
-
 /// Points per chunk for `d` values per point.
 fn chunk_points(d: usize) -> usize {
     (CHUNK_VALUES / d).max(1)
 }
 
-/// `n` points of `d` values, `value(start + k, j)` each, in parallel chunks.
-fn chunked<T: Send + Copy + Default>(
-    n: usize,
-    d: usize,
-    start: u64,
-    value: impl Fn(u64, u32) -> T + Sync,
-) -> Vec<T> {
-    let mut out = vec![T::default(); n * d];
+/// Fills `out` (points of `d` values) with `value(start + k, j)`, in
+/// parallel chunks.
+fn chunked<T: Send>(out: &mut [T], d: usize, start: u64, value: impl Fn(u64, u32) -> T + Sync) {
     let per = chunk_points(d);
     out.par_chunks_mut(per * d)
         .enumerate()
         .for_each(|(c, block)| {
             let first = start + (c * per) as u64;
-            for (k, point) in block.chunks_exact_mut(d).enumerate() {
+            for (k, point) in (first..).zip(block.chunks_exact_mut(d)) {
                 for (j, v) in point.iter_mut().enumerate() {
-                    *v = value(first + k as u64, j as u32);
+                    *v = value(k, j as u32);
                 }
             }
         });
-    out
 }
 
-/// The Sobol points of a checked request, each digit word converted by
-/// `convert` (chunk by chunk, so no array of words is kept).
-fn sobol<T: Send + Copy + Default>(
-    spec: &PointSpec,
-    r: RandomizeStrategy,
-    convert: impl Fn(u32) -> T + Sync,
-) -> Vec<T> {
-    let (n, d) = (spec.n as usize, spec.d as usize);
-    let mut out = vec![T::default(); n * d];
-    let per = chunk_points(d);
-    out.par_chunks_mut(per * d)
-        .enumerate()
-        .for_each(|(c, block)| {
-            // Checked: start + n <= 2^32 and d <= the table's dimensions.
-            let first = (spec.start + (c * per) as u64) as u32;
-            let mut words = vec![0u32; block.len()];
-            if spec.natural_order {
-                for (k, point) in words.chunks_exact_mut(d).enumerate() {
-                    for (j, v) in point.iter_mut().enumerate() {
-                        *v = sobol::sample(first + k as u32, j as u32);
-                    }
-                }
-            } else if let Ok(mut batch) = GrayCodeBatch::new(0, d as u32) {
-                batch.seek(first);
-                batch.fill(&mut words);
-            }
-            if r == RandomizeStrategy::None {
-                for (o, &w) in block.iter_mut().zip(&words) {
-                    *o = convert(w);
-                }
-            } else {
-                let mut cache = ScrambleCache::new(r, spec.seed);
-                for (point, ws) in block.chunks_exact_mut(d).zip(words.chunks_exact(d)) {
-                    for (j, (o, &w)) in point.iter_mut().zip(ws).enumerate() {
-                        *o = convert(cache.apply(w, j as u32));
-                    }
-                }
-            }
-        });
-    out
-}
-
-/// Digit words (masked to their leading digits) in the requested type.
-fn from_words(words: Vec<u32>, mask: u32, dtype: Dtype) -> Values {
-    match dtype {
-        Dtype::U32 if mask == u32::MAX => Values::U32(words),
-        Dtype::U32 => Values::U32(words.par_iter().map(|&w| w & mask).collect()),
-        Dtype::F64 => Values::F64(
-            words
-                .par_iter()
-                .map(|&w| lowdisc::to_f64(w & mask))
-                .collect(),
-        ),
-        Dtype::F32 => Values::F32(
-            words
-                .par_iter()
-                .map(|&w| lowdisc::to_f32(w & mask))
-                .collect(),
-        ),
+/// Fills `out` with the digit words `word(start + k, j)` in its type.
+fn store_words(out: Output<'_>, d: usize, start: u64, word: impl Fn(u64, u32) -> u32 + Sync) {
+    match out {
+        Output::F64(o) => chunked(o, d, start, |k, j| lowdisc::to_f64(word(k, j))),
+        Output::F32(o) => chunked(o, d, start, |k, j| lowdisc::to_f32(word(k, j))),
+        Output::U32(o) => chunked(o, d, start, word),
     }
 }
 

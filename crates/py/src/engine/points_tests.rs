@@ -37,7 +37,7 @@ fn sobol_equals_the_catalog_in_both_orders_and_every_scramble() {
     for (scramble, name) in [
         ("none", "sobol"),
         ("xor", "sobol-xor"),
-        ("owen", "sobol-owen"),
+        ("owen-per-digit", "sobol-owen"),
         ("fast-owen", "sobol-fast-owen"),
     ] {
         let mut s = spec(Sequence::Sobol, scramble, 300, 7);
@@ -155,6 +155,7 @@ fn results_do_not_depend_on_the_thread_count() {
                 pixels: (0..4096).map(|k| [k % 64, k / 64]).collect(),
                 dims: 6,
                 seed: 2,
+                tile_size: 16,
             };
             (words(&s), super::super::pixel::pixel_samples(&p).unwrap())
         })

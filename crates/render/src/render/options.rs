@@ -98,7 +98,7 @@ impl Default for RenderOptions {
             sampler: SamplerConfig::new(SamplerName::ZSobol),
             integrator: PathIntegrator::default(),
             threads: None,
-            tile_size: 16,
+            tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
             window: None,
             samples: None,
             spectral: false,

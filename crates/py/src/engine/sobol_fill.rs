@@ -1,0 +1,225 @@
+//! Sobol points written straight into the output array, point-major as
+//! numpy's C order wants, in parallel chunks of whole points.
+//!
+//! A chunk starts from its first point's digit words (one matrix product per
+//! dimension) and then, in Gray-code order, moves to the next point by
+//! XORing one column into every dimension (`trailing_zeros` of the index);
+//! in natural order every value is a matrix product. Each word is scrambled
+//! by the per-dimension state of a [`Scrambler`], built once per request,
+//! and converted as it is stored, so no intermediate array is kept. Every
+//! value depends only on its index and dimension: chunks can run on any
+//! thread in any order and give the same bits.
+
+use lowdisc::scramble::{OwenTreeKey, PreparedKey, RandomizeStrategy, dimension_seed, owen_tree};
+use lowdisc::sobol::{self, gray_code};
+use rayon::prelude::*;
+
+use super::{CHUNK_VALUES, EngineError, Result};
+
+/// Dimensions up to this get Owen keys with the 4096-entry table (8 KiB
+/// each); beyond, the 64-entry one (the values are the same).
+const LARGE_TABLE_DIMENSIONS: u32 = 1024;
+
+/// The per-dimension state of one request's scramble.
+pub enum Scrambler {
+    /// No scramble.
+    None,
+    /// A catalog strategy that needs only each dimension's seed (`xor`,
+    /// `fast-owen`): `strategy.apply_dimension_seed(word, seeds[j])`.
+    Seeded(RandomizeStrategy, Vec<u32>),
+    /// The catalog's per-digit exact Owen scramble (`owen-per-digit`: the
+    /// renderer's `sobol-owen` values), prepared per dimension.
+    PerDigit(Vec<PreparedKey>),
+    /// Owen scrambling at a few hashes per value ([`OwenTreeKey`], `owen`).
+    Tree(Vec<OwenTreeKey>),
+}
+
+/// The names [`Scrambler::new`] accepts.
+pub const SCRAMBLES: [&str; 5] = ["none", "xor", "owen", "fast-owen", "owen-per-digit"];
+
+impl Scrambler {
+    /// Whether `name` is one of [`SCRAMBLES`].
+    pub fn check_name(name: &str) -> Result<()> {
+        if SCRAMBLES.contains(&name) {
+            return Ok(());
+        }
+        Err(EngineError::value(format!(
+            "Sobol scramble must be 'none', 'xor', 'owen', 'fast-owen' or 'owen-per-digit', \
+             got {name:?}"
+        )))
+    }
+
+    /// The scramble called `name` of dimensions `0..d` under `seed`.
+    pub fn new(name: &str, seed: u64, d: u32) -> Result<Scrambler> {
+        Scrambler::check_name(name)?;
+        let seeds = || (0..d).map(|j| dimension_seed(seed, j)).collect();
+        Ok(match name {
+            "xor" => Scrambler::Seeded(RandomizeStrategy::Xor, seeds()),
+            "fast-owen" => Scrambler::Seeded(RandomizeStrategy::FastOwen, seeds()),
+            "owen-per-digit" => Scrambler::PerDigit(
+                (0..d)
+                    .filter_map(|j| RandomizeStrategy::Owen.prepare(dimension_seed(seed, j)))
+                    .collect(),
+            ),
+            "owen" => {
+                let table = if d <= LARGE_TABLE_DIMENSIONS { 12 } else { 6 };
+                Scrambler::Tree(
+                    (0..d)
+                        .into_par_iter()
+                        .map(|j| OwenTreeKey::with_table(seed, j, table))
+                        .collect(),
+                )
+            }
+            // "none", the one name left that check_name accepts.
+            _ => Scrambler::None,
+        })
+    }
+
+    /// Scrambles one point's words into `out`, keeping `digits` leading
+    /// digits and converting each word with `convert`.
+    #[inline]
+    fn row<T>(&self, words: &[u32], out: &mut [T], digits: u32, convert: &impl Fn(u32) -> T) {
+        let mask = u32::MAX << (32 - digits);
+        let pairs = out.iter_mut().zip(words);
+        match self {
+            Scrambler::None => pairs.for_each(|(o, &w)| *o = convert(w & mask)),
+            Scrambler::Seeded(r, seeds) => pairs
+                .zip(seeds)
+                .for_each(|((o, &w), &s)| *o = convert(r.apply_dimension_seed(w, s) & mask)),
+            Scrambler::PerDigit(keys) => pairs
+                .zip(keys)
+                .for_each(|((o, &w), k)| *o = convert(k.scramble(w) & mask)),
+            Scrambler::Tree(keys) => match owen_tree::layers_of(digits) {
+                0..=2 => tree_row::<2, T>(keys, words, out, digits, convert),
+                3 => tree_row::<3, T>(keys, words, out, digits, convert),
+                4 => tree_row::<4, T>(keys, words, out, digits, convert),
+                5 => tree_row::<5, T>(keys, words, out, digits, convert),
+                _ => tree_row::<6, T>(keys, words, out, digits, convert),
+            },
+        }
+    }
+}
+
+/// One point's tree-scrambled words, `LAYERS` layers hashed (so the loop is
+/// unrolled at compile time).
+#[inline(always)]
+fn tree_row<const LAYERS: usize, T>(
+    keys: &[OwenTreeKey],
+    words: &[u32],
+    out: &mut [T],
+    digits: u32,
+    convert: &impl Fn(u32) -> T,
+) {
+    for ((o, &w), k) in out.iter_mut().zip(words).zip(keys) {
+        *o = convert(k.scramble_layers::<LAYERS>(w, digits));
+    }
+}
+
+/// The request's shape: points `start .. start + n` of dimensions `0..d`.
+#[derive(Debug, Clone, Copy)]
+pub struct SobolRange {
+    /// Index of the first point (`start + n <= 2^32`, checked by the caller).
+    pub start: u64,
+    /// Dimensions per point (at most the table's, checked by the caller).
+    pub d: usize,
+    /// Natural order instead of Gray code.
+    pub natural_order: bool,
+    /// Leading digits kept, `1..=32`.
+    pub digits: u32,
+}
+
+/// Fills `out` (`n * d` values, point-major) with the scrambled points of
+/// `range`, each word converted by `convert`.
+pub fn fill<T: Send>(
+    out: &mut [T],
+    range: SobolRange,
+    scrambler: &Scrambler,
+    convert: impl Fn(u32) -> T + Sync,
+) {
+    let d = range.d;
+    // columns[c * d + j]: column c of dimension j.
+    let columns: Vec<u32> = (0..32)
+        .flat_map(|c| (0..d as u32).map(move |j| sobol::matrix(j)[c]))
+        .collect();
+    let per = (CHUNK_VALUES / d).max(1);
+    out.par_chunks_mut(per * d)
+        .enumerate()
+        .for_each(|(c, block)| {
+            let first = range.start + (c * per) as u64;
+            let mut words = vec![0u32; d];
+            let rows = block.chunks_exact_mut(d);
+            if range.natural_order {
+                for (k, row) in (first..).zip(rows) {
+                    for (j, w) in words.iter_mut().enumerate() {
+                        *w = sobol::sample(k as u32, j as u32);
+                    }
+                    scrambler.row(&words, row, range.digits, &convert);
+                }
+                return;
+            }
+            for (j, w) in words.iter_mut().enumerate() {
+                *w = sobol::sample(gray_code(first as u32), j as u32);
+            }
+            for (k, row) in (first..).zip(rows) {
+                scrambler.row(&words, row, range.digits, &convert);
+                // Point k + 1 (< 2^32 while rows remain) XORs its column.
+                let c = (k + 1).trailing_zeros().min(31) as usize;
+                for (w, &col) in words.iter_mut().zip(&columns[c * d..(c + 1) * d]) {
+                    *w ^= col;
+                }
+            }
+        });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lowdisc::sobol::GrayCodeBatch;
+
+    fn words(scramble: &str, n: usize, d: usize, start: u64, natural: bool) -> Vec<u32> {
+        let mut out = vec![0u32; n * d];
+        let range = SobolRange {
+            start,
+            d,
+            natural_order: natural,
+            digits: 32,
+        };
+        fill(
+            &mut out,
+            range,
+            &Scrambler::new(scramble, 3, d as u32).unwrap(),
+            |w| w,
+        );
+        out
+    }
+
+    #[test]
+    fn gray_code_points_equal_the_batch_generator_across_chunks() {
+        // 2 dimensions: chunks of 32768 points, so 70,000 points span three.
+        for (d, n, start) in [(2usize, 70_000usize, 5u64), (64, 3000, 1 << 31), (1, 10, 0)] {
+            let mut batch = GrayCodeBatch::new(0, d as u32).unwrap();
+            batch.seek(start as u32);
+            let mut want = vec![0u32; n * d];
+            batch.fill(&mut want);
+            assert_eq!(words("none", n, d, start, false), want, "d {d}");
+        }
+    }
+
+    #[test]
+    fn the_tree_scramble_is_the_key_of_each_dimension() {
+        let (n, d) = (5000, 70);
+        let got = words("owen", n, d, 100, true);
+        let keys: Vec<_> = (0..d as u32).map(|j| OwenTreeKey::new(3, j)).collect();
+        for (k, point) in (100..).zip(got.chunks_exact(d)) {
+            for ((j, &w), key) in (0..).zip(point).zip(&keys) {
+                assert_eq!(w, key.scramble(sobol::sample(k, j)));
+            }
+        }
+    }
+
+    #[test]
+    fn unknown_scrambles_are_refused_with_the_choices() {
+        let err = Scrambler::new("lms", 0, 2).err().unwrap().to_string();
+        assert!(err.contains("'owen-per-digit', got \"lms\""), "{err}");
+    }
+}
