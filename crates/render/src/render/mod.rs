@@ -223,14 +223,32 @@ impl Totals {
 }
 
 /// Renders one tile with its own sampler stream into its film tile.
+///
+/// The loop is compiled for the default sampler and for `independent` on
+/// their own types, so that their calls inline into the integrator; every
+/// other sampler goes through the [`Sampler`] enum's dispatch. The values
+/// are the same either way.
 fn render_tile(
     scene: &Scene,
     opts: &RenderOptions,
     sampler: &Sampler,
     k: u64,
+    film: FilmTile,
+) -> TileResult {
+    match sampler.with_stream(k) {
+        Sampler::ZSobol(s) => render_tile_with(scene, opts, s, film),
+        Sampler::Independent(s) => render_tile_with(scene, opts, s, film),
+        other => render_tile_with(scene, opts, other, film),
+    }
+}
+
+/// [`render_tile`] with a sampler of type `S`.
+fn render_tile_with<S: PixelSampler>(
+    scene: &Scene,
+    opts: &RenderOptions,
+    mut sampler: S,
     mut film: FilmTile,
 ) -> TileResult {
-    let mut sampler = sampler.with_stream(k);
     let mut stats = PathStats::default();
     let (integrator, seed) = (&opts.integrator, opts.sampler.seed);
     let bounds: PixelBounds = film.bounds();
