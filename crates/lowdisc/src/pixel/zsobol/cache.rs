@@ -270,10 +270,14 @@ fn lower_digits(entry: &Entry, levels: &[u64], m: u32, morton: u64) -> u64 {
     let sample_digits = m / 2;
     let mut lower = 0u64;
     let tree = tree_digits(m);
-    for j in 0..tree {
-        // The `j` sample digits above this one.
-        let above = (morton >> (m - 2 * j)) & ((1 << (2 * j)) - 1);
-        lower |= apply_packed(entry.tree[tree_slot(j, above)], morton, m - 2 - 2 * j);
+    // Top down through the tree, a complete 4-ary heap: the node after
+    // digit `d` at node `k` is `4k + 1 + d` (`tree_slot` in closed form).
+    let (mut node, mut shift) = (0, m);
+    for _ in 0..tree {
+        shift -= 2;
+        let digit = (morton >> shift) & 3;
+        lower |= u64::from((entry.tree[node] >> (2 * digit)) & 3) << shift;
+        node = 4 * node + 1 + digit as usize;
     }
     // The digits below the tree's (index `i` at shift `2i - odd`).
     let rest = sample_digits - tree + odd;
