@@ -137,6 +137,9 @@ def main():
             if have_bmw:
                 args = [bmw, "--envmap", a.envmap, "--res", a.bmw_res, "--spp", str(a.bmw_spp)]
                 bmw_runs.append(lowdisc_run(a.lowdisc, args, out))
+            print("round %d: %s" % (run + 1, ", ".join(
+                "%s %.2f s" % (name, t[-1]) for name, t in times.items())),
+                file=sys.stderr, flush=True)
     print("mi.cornell_box(): 256x256, %d spp, maxdepth %d (Mitsuba max_depth %d), "
           "%d interleaved runs\n" % (a.spp, a.maxdepth, a.maxdepth + 1, a.runs))
     print("| renderer | scene | timed | best | median |")
