@@ -94,17 +94,27 @@ impl RandomizeStrategy {
         }
     }
 
-    /// [`RandomizeStrategy::apply_dimension_seed`] of
-    /// `reversed.reverse_bits()`: the fast Owen scramble works on
-    /// bit-reversed words, so a caller that keeps its words reversed saves a
-    /// reversal.
-    #[inline(always)]
-    pub fn apply_dimension_seed_reversed(self, reversed: u32, dimension_seed: u32) -> u32 {
+    /// The scramble key of a per-dimension seed, for
+    /// [`RandomizeStrategy::apply_key_reversed`]: [`fast_owen_key`] of it
+    /// for [`RandomizeStrategy::FastOwen`], the seed itself otherwise. A
+    /// caller that scrambles many words of one dimension derives it once.
+    #[inline]
+    pub fn scramble_key(self, dimension_seed: u32) -> u32 {
         match self {
-            RandomizeStrategy::FastOwen => {
-                fast_owen_scramble_reversed(reversed, fast_owen_key(dimension_seed))
-            }
-            r => r.apply_dimension_seed(reversed.reverse_bits(), dimension_seed),
+            RandomizeStrategy::FastOwen => fast_owen_key(dimension_seed),
+            _ => dimension_seed,
+        }
+    }
+
+    /// [`RandomizeStrategy::apply_dimension_seed`] of
+    /// `reversed.reverse_bits()`, given `key = self.scramble_key(dimension_seed)`:
+    /// the fast Owen scramble works on bit-reversed words, so a caller that
+    /// keeps its words reversed saves a reversal.
+    #[inline(always)]
+    pub fn apply_key_reversed(self, reversed: u32, key: u32) -> u32 {
+        match self {
+            RandomizeStrategy::FastOwen => fast_owen_scramble_reversed(reversed, key),
+            r => r.apply_dimension_seed(reversed.reverse_bits(), key),
         }
     }
 

@@ -37,7 +37,7 @@ fn apply_dimension_seed_equals_apply() {
                 let want = r.apply(word, seed, dim);
                 assert_eq!(r.apply_dimension_seed(word, s), want);
                 let reversed = word.reverse_bits();
-                assert_eq!(r.apply_dimension_seed_reversed(reversed, s), want);
+                assert_eq!(r.apply_key_reversed(reversed, r.scramble_key(s)), want);
             }
         }
     }

@@ -122,6 +122,11 @@ impl Bvh {
     pub fn root4(&self) -> ChildRef {
         self.root4
     }
+    /// Levels of [`Node4`]s on the longest root-to-leaf path (0 when the
+    /// root is a leaf).
+    pub fn levels4(&self) -> usize {
+        self.levels4
+    }
     /// `prim_order()[k]` is the input index of the `k`-th primitive in leaf order.
     pub fn prim_order(&self) -> &[u32] {
         &self.prim_order

@@ -186,7 +186,7 @@ fn wide_tree_covers_every_binary_leaf_once() {
         want.sort_unstable();
         assert_eq!(leaves, want, "seed {seed}");
         assert_eq!(bvh.stats().nodes4, bvh.nodes4().len());
-        assert!(bvh.levels4 <= bvh.stats().max_depth.max(1));
+        assert!(bvh.levels4() <= bvh.stats().max_depth.max(1));
         // Each 4-wide node absorbs at least one of the (nodes - 1) / 2
         // binary interior nodes.
         assert!(bvh.nodes4().len() <= bvh.nodes().len() / 2 + 1);

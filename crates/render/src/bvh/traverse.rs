@@ -9,17 +9,12 @@
 use super::wide::{ChildRef, INTERIOR, Node4};
 use super::{Bvh, MAX_DEPTH};
 use crate::math::{Ray, gamma};
+use arrayvec::ArrayVec;
 use wide::{CmpLe, f32x4};
 
-/// Stack size for trees of at most `MICRO_STACK / 3` levels (small scenes:
-/// zeroing it per ray costs a few stores instead of a `memset` call).
-const MICRO_STACK: usize = 9;
-/// Stack size for trees of at most `TINY_STACK / 3` levels.
-const TINY_STACK: usize = 24;
-/// Stack size for trees of at most `SMALL_STACK / 3` levels.
-const SMALL_STACK: usize = 66;
-/// Stack size for any tree the builder makes (at most `MAX_DEPTH` levels).
-const LARGE_STACK: usize = 3 * MAX_DEPTH;
+/// Stack capacity: a visit pushes at most three subtrees, so a tree of at
+/// most `MAX_DEPTH` levels never stacks more.
+const STACK: usize = 3 * MAX_DEPTH;
 
 /// Widening of slab and query distances against rounding (pbrt's `1 + 2γ(3)`).
 const WIDEN: f32 = 1.0 + 2.0 * gamma(3);
@@ -102,32 +97,23 @@ impl RayInv {
     }
 }
 
-/// A fixed-capacity stack of subtrees with their entry distances.
-struct Stack<const N: usize> {
-    refs: [ChildRef; N],
-    t: [f32; N],
-    len: usize,
-}
+/// A fixed-capacity stack of subtrees with their entry distances. It lives
+/// on the call stack and is never zeroed: only the entries pushed are
+/// written.
+struct Stack(ArrayVec<(ChildRef, f32), STACK>);
 
-impl<const N: usize> Stack<N> {
+impl Stack {
     #[inline(always)]
     fn new() -> Self {
-        Stack {
-            refs: [ChildRef::default(); N],
-            t: [0.0; N],
-            len: 0,
-        }
+        Stack(ArrayVec::new())
     }
     #[inline(always)]
     fn push(&mut self, r: ChildRef, t: f32) {
-        self.refs[self.len] = r;
-        self.t[self.len] = t;
-        self.len += 1;
+        self.0.push((r, t));
     }
     #[inline(always)]
     fn pop(&mut self) -> Option<(ChildRef, f32)> {
-        self.len = self.len.checked_sub(1)?;
-        Some((self.refs[self.len], self.t[self.len]))
+        self.0.pop()
     }
 }
 
@@ -152,45 +138,6 @@ impl Bvh {
         &self,
         ray: &Ray,
         t_max: f32,
-        leaf: impl FnMut(u32, u32, f32) -> Option<f32>,
-    ) -> Option<f32> {
-        // The stack is zeroed per ray: size it to the tree.
-        let need = self.levels4 * 3;
-        if need <= MICRO_STACK {
-            self.closest_hit_n::<MICRO_STACK>(ray, t_max, leaf)
-        } else if need <= TINY_STACK {
-            self.closest_hit_n::<TINY_STACK>(ray, t_max, leaf)
-        } else if need <= SMALL_STACK {
-            self.closest_hit_n::<SMALL_STACK>(ray, t_max, leaf)
-        } else {
-            self.closest_hit_n::<LARGE_STACK>(ray, t_max, leaf)
-        }
-    }
-
-    /// True if any primitive is hit in `(0, t_max)` (shadow rays).
-    ///
-    /// `leaf(first, count, t_max)` tests the primitives at leaf-order
-    /// positions `first..first + count`; traversal stops at the first leaf
-    /// for which it returns `true`.
-    #[inline]
-    pub fn any_hit(&self, ray: &Ray, t_max: f32, leaf: impl FnMut(u32, u32, f32) -> bool) -> bool {
-        let need = self.levels4 * 3;
-        if need <= MICRO_STACK {
-            self.any_hit_n::<MICRO_STACK>(ray, t_max, leaf)
-        } else if need <= TINY_STACK {
-            self.any_hit_n::<TINY_STACK>(ray, t_max, leaf)
-        } else if need <= SMALL_STACK {
-            self.any_hit_n::<SMALL_STACK>(ray, t_max, leaf)
-        } else {
-            self.any_hit_n::<LARGE_STACK>(ray, t_max, leaf)
-        }
-    }
-
-    #[inline(always)]
-    fn closest_hit_n<const N: usize>(
-        &self,
-        ray: &Ray,
-        t_max: f32,
         mut leaf: impl FnMut(u32, u32, f32) -> Option<f32>,
     ) -> Option<f32> {
         let r = RayInv::new(ray);
@@ -201,7 +148,7 @@ impl Bvh {
         // once a hit that is only slightly farther has shrunk `t_max`.
         let mut t_box = t_max * WIDEN;
         let mut found = None;
-        let mut stack = Stack::<N>::new();
+        let mut stack = Stack::new();
         let mut cur = self.root4;
         loop {
             if cur.count == INTERIOR {
@@ -250,8 +197,13 @@ impl Bvh {
         }
     }
 
-    #[inline(always)]
-    fn any_hit_n<const N: usize>(
+    /// True if any primitive is hit in `(0, t_max)` (shadow rays).
+    ///
+    /// `leaf(first, count, t_max)` tests the primitives at leaf-order
+    /// positions `first..first + count`; traversal stops at the first leaf
+    /// for which it returns `true`.
+    #[inline]
+    pub fn any_hit(
         &self,
         ray: &Ray,
         t_max: f32,
@@ -259,7 +211,7 @@ impl Bvh {
     ) -> bool {
         let r = RayInv::new(ray);
         let t_box = t_max * WIDEN;
-        let mut stack = Stack::<N>::new();
+        let mut stack = Stack::new();
         let mut cur = self.root4;
         loop {
             if cur.count == INTERIOR {

@@ -257,19 +257,40 @@ impl Totals {
 /// Renders the samples of `film` (the part of tile `rect` inside the window)
 /// with tile `k`'s sampler stream; an order-dependent sampler replays the
 /// tile from its first pixel.
+///
+/// The loop is compiled for the default sampler and for `independent` on
+/// their own types, so that their calls inline into the integrator; every
+/// other sampler goes through the [`Sampler`] enum's dispatch. The values
+/// are the same either way.
 fn render_tile(
     scene: &Scene,
     opts: &RenderOptions,
     sampler: &Sampler,
     k: u64,
     rect: PixelBounds,
+    film: FilmTile,
+) -> TileResult {
+    let replay = sampler.is_order_dependent();
+    match sampler.with_stream(k) {
+        Sampler::ZSobol(s) => render_tile_with(scene, opts, s, replay, rect, film),
+        Sampler::Independent(s) => render_tile_with(scene, opts, s, replay, rect, film),
+        other => render_tile_with(scene, opts, other, replay, rect, film),
+    }
+}
+
+/// [`render_tile`] with a sampler of type `S`; `replay` is the sampler's
+/// [`Sampler::is_order_dependent`].
+fn render_tile_with<S: PixelSampler>(
+    scene: &Scene,
+    opts: &RenderOptions,
+    mut sampler: S,
+    replay: bool,
+    rect: PixelBounds,
     mut film: FilmTile,
 ) -> TileResult {
-    let mut sampler = sampler.with_stream(k);
     let mut stats = PathStats::default();
     let (integrator, seed) = (&opts.integrator, opts.sampler.seed);
     let (kept, range) = (film.bounds(), opts.sample_range());
-    let replay = sampler.is_order_dependent();
     let (pixels, indices) = if replay {
         (rect, SampleRange::all(opts.sampler.spp))
     } else {

@@ -13,11 +13,12 @@
 //!   index bits above 31, all among these digits as `m <= 32`) are kept
 //!   until the pixel changes. A renderer visits the samples of a pixel one
 //!   after another, so this is computed once per pixel and key.
-//!   The permutations of the two highest sample digits are chosen by hashes
-//!   of the pixel digits and at most one sample digit, so the 1 + 4 of them
-//!   are kept too.
-//! * **Per value**: the sample digits below those two (one bit mix each;
-//!   none for `m <= 5`), the odd low bit's flip, a table lookup of the Sobol
+//!   The permutations of the four highest sample digits are chosen by
+//!   hashes of the pixel digits and at most three sample digits, so the
+//!   1 + 4 + 16 + 64 of them are kept too, as is the scramble key of each
+//!   randomizer seed.
+//! * **Per value**: the sample digits below those four (one bit mix each;
+//!   none for `m <= 9`), the odd low bit's flip, a table lookup of the Sobol
 //!   words of the low bits and the scramble.
 //!
 //! Keys `0..CACHED_KEYS` and the pixel key are cached; any other key takes
@@ -63,16 +64,18 @@ struct Entry {
     /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel
     /// digits, bit-reversed (see `Cache::lower_words`).
     upper_words: [u32; 2],
-    /// Packed permutations (see [`PACKED_PERMUTATIONS`]) of the highest
-    /// sample digit (entry 0) and of the next one after each value `v` of
-    /// the highest (entry `1 + v`), when those digits exist.
-    tree: [u8; 5],
-    /// Whether `seeds` is computed (for `high`).
+    /// Packed permutations (see [`PACKED_PERMUTATIONS`]) of the
+    /// [`TREE_DIGITS`] highest sample digits (when they exist): that of the
+    /// `j`-th from the top after the digits above it read `v` (a `j`-digit
+    /// base-4 number) is entry `tree_slot(j, v)`.
+    tree: [u8; TREE_LEN],
+    /// Whether `keys` is computed (for `high`).
     seeded: bool,
-    /// Index bits above 31 the seeds are for.
+    /// Index bits above 31 the keys are for.
     high: u64,
-    /// Per-dimension scramble seeds of Sobol dimensions 0 and 1.
-    seeds: [u32; 2],
+    /// Scramble keys ([`RandomizeStrategy::scramble_key`]) of the
+    /// per-dimension seeds of Sobol dimensions 0 and 1.
+    keys: [u32; 2],
 }
 
 /// The caches of one sampler (see the module documentation).
@@ -138,9 +141,7 @@ impl Cache {
         let entry = &self.entries[slot];
         Some(core::array::from_fn(|d| {
             let reversed = entry.upper_words[d] ^ lower_words[d];
-            layout
-                .strategy
-                .apply_dimension_seed_reversed(reversed, entry.seeds[d])
+            layout.strategy.apply_key_reversed(reversed, entry.keys[d])
         }))
     }
 
@@ -157,10 +158,10 @@ impl Cache {
                 valid: false,
                 code: 0,
                 upper_words: [0; 2],
-                tree: [0; 5],
+                tree: [0; TREE_LEN],
                 seeded: false,
                 high: 0,
-                seeds: [0; 2],
+                keys: [0; 2],
             });
         }
     }
@@ -223,25 +224,43 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
         upper |= permuted_digit(level, morton, 2 * i - odd);
     }
     entry.upper_words = reversed_words(upper as u32);
-    // The two highest sample digits, at shifts m - 2 and m - 4.
-    let (top, sample_digits) = (m.div_ceil(2) as usize, m / 2);
-    if sample_digits >= 1 {
-        entry.tree[0] = packed_permutation(levels[top - 1], code);
-    }
-    if sample_digits >= 2 {
-        for v in 0..4u64 {
-            entry.tree[1 + v as usize] = packed_permutation(levels[top - 2], (code << 2) | v);
+    // The highest sample digits: the `j`-th from the top is digit
+    // `top - 1 - j` at shift `m - 2 - 2j`.
+    let top = m.div_ceil(2) as usize;
+    for j in 0..tree_digits(m) {
+        for v in 0..1u64 << (2 * j) {
+            let permutation =
+                packed_permutation(levels[top - 1 - j as usize], (code << (2 * j)) | v);
+            entry.tree[tree_slot(j, v)] = permutation;
         }
     }
     let high = upper >> 32;
     if !entry.seeded || entry.high != high {
         let h = hash_words(&[layout.seed, SEED_PAD, key, high]);
-        entry.seeds = [dimension_seed(h, 0), dimension_seed(h, 1)];
+        entry.keys = [0, 1].map(|d| layout.strategy.scramble_key(dimension_seed(h, d)));
         entry.high = high;
         entry.seeded = true;
     }
     entry.code = code;
     entry.valid = true;
+}
+
+/// Sample digits whose permutations [`Entry::tree`] keeps (at most).
+const TREE_DIGITS: u32 = 4;
+/// Entries of [`Entry::tree`]: `4^0 + 4^1 + ... + 4^(TREE_DIGITS - 1)`.
+const TREE_LEN: usize = ((1 << (2 * TREE_DIGITS)) - 1) / 3;
+
+/// Sample digits in the tree for `m` sample bits.
+#[inline(always)]
+fn tree_digits(m: u32) -> u32 {
+    (m / 2).min(TREE_DIGITS)
+}
+
+/// The tree entry of the `j`-th sample digit from the top after the
+/// digits above it read `above`.
+#[inline(always)]
+fn tree_slot(j: u32, above: u64) -> usize {
+    ((1usize << (2 * j)) - 1) / 3 + above as usize
 }
 
 /// The permuted index bits below `m` (the sample digits and the odd low bit).
@@ -250,15 +269,18 @@ fn lower_digits(entry: &Entry, levels: &[u64], m: u32, morton: u64) -> u64 {
     let odd = m & 1;
     let sample_digits = m / 2;
     let mut lower = 0u64;
-    if sample_digits >= 1 {
-        lower |= apply_packed(entry.tree[0], morton, m - 2);
+    let tree = tree_digits(m);
+    // Top down through the tree, a complete 4-ary heap: the node after
+    // digit `d` at node `k` is `4k + 1 + d` (`tree_slot` in closed form).
+    let (mut node, mut shift) = (0, m);
+    for _ in 0..tree {
+        shift -= 2;
+        let digit = (morton >> shift) & 3;
+        lower |= u64::from((entry.tree[node] >> (2 * digit)) & 3) << shift;
+        node = 4 * node + 1 + digit as usize;
     }
-    if sample_digits >= 2 {
-        let top = (morton >> (m - 2)) & 3;
-        lower |= apply_packed(entry.tree[1 + top as usize], morton, m - 4);
-    }
-    // The digits below those two (index `i` at shift `2i - odd`).
-    let rest = sample_digits.saturating_sub(2) + odd;
+    // The digits below the tree's (index `i` at shift `2i - odd`).
+    let rest = sample_digits - tree + odd;
     for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
         lower |= permuted_digit(level, morton, 2 * i - odd);
     }
