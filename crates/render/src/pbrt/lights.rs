@@ -130,7 +130,7 @@ impl PbrtLoader {
                 return Ok(());
             }
         };
-        ps.warn_unused(&format!("LightSource \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("LightSource \"{ty}\""), &mut self.warnings)?;
         self.builder.add_light(light);
         self.counts.lights += 1;
         Ok(())
@@ -166,7 +166,7 @@ impl PbrtLoader {
             two_sided: ps.bool_or("twosided", false),
             power: Self::positive(ps, "power"),
         };
-        ps.warn_unused("AreaLightSource \"diffuse\"", &mut self.warnings);
+        ps.finish("AreaLightSource \"diffuse\"", &mut self.warnings)?;
         self.state.cur.area = Some(spec);
         Ok(())
     }
