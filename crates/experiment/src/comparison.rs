@@ -46,7 +46,8 @@ fn column(s: &SamplerResult, f: MetricOf) -> Vec<f64> {
     s.runs.iter().map(f).collect()
 }
 
-/// Fills every sampler's `statistics` (one entry per [`METRICS`] metric).
+/// Fills every sampler's `statistics` (one entry per [`METRICS`] metric),
+/// and its `relmse_ratio_interval` from the paired `relmse` entry.
 pub fn fill_statistics(samplers: &mut [SamplerResult]) {
     let base = samplers.iter().position(|s| s.name == BASELINE);
     let baseline: Vec<Vec<f64>> = match base {
@@ -73,7 +74,22 @@ pub fn fill_statistics(samplers: &mut [SamplerResult]) {
                 }
             })
             .collect();
+        s.relmse_ratio_interval = match relmse_ratio(s) {
+            Some(r) => Some(r.ci95),
+            None if Some(k) == base => Some([1.0, 1.0]),
+            None => None,
+        };
     }
+}
+
+/// The paired ratio of a sampler's linear relMSE to the baseline's (the
+/// `relmse` entry of its `statistics`), if there is one.
+pub fn relmse_ratio(s: &SamplerResult) -> Option<&PairedRatio> {
+    s.statistics
+        .iter()
+        .find(|m| m.metric == "relmse")?
+        .ratio_to_baseline
+        .as_ref()
 }
 
 #[cfg(test)]
@@ -138,5 +154,10 @@ mod tests {
                 .all(|m| m.ratio_to_baseline.is_none())
         );
         assert_eq!(v[1].statistics[0].summary.n, 4);
+        // The relMSE interval of results.json is the paired one.
+        let relmse = relmse_ratio(&v[0]).unwrap();
+        assert_eq!(v[0].relmse_ratio_interval, Some(relmse.ci95));
+        assert!(relmse.ci95[0] < 0.8 && 0.8 < relmse.ci95[1], "{relmse:?}");
+        assert_eq!(v[1].relmse_ratio_interval, Some([1.0, 1.0]));
     }
 }

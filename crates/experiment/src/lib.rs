@@ -49,7 +49,7 @@
 //!   time_s, mse, relmse, rmse, mae (linear, each {mean, sd}),
 //!   srgb8: {mse, relmse, rmse, mae} (each {mean, sd}),
 //!   relmse_ratio_to_sobol (number or null), relmse_ratio_interval ([lo, hi]
-//!   or null, approximate 95 %), statistics: [{metric, summary:
+//!   or null: the 95 % interval of the paired relmse ratio in statistics), statistics: [{metric, summary:
 //!   {n, mean, sd, se, ci95: [lo, hi]}, ratio_to_baseline: {n, ratio, ci95,
 //!   log_ratio: {summary}, ratio_of_means, verdict} or null}] (metrics
 //!   masked_mse, masked_relmse, blurred_mse, flip, mse, relmse; see

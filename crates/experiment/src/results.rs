@@ -10,7 +10,7 @@ use serde::Serialize;
 use crate::comparison::MetricStats;
 use crate::metrics::{ErrorStats, MetricSummary};
 use crate::quality::Quality;
-use crate::stats::{MeanSd, ratio, ratio_interval};
+use crate::stats::{MeanSd, ratio};
 
 /// One render's numbers.
 #[derive(Debug, Clone, Serialize)]
@@ -59,8 +59,9 @@ pub struct SamplerResult {
     pub srgb8: MetricSummary,
     /// Mean linear relMSE over `sobol`'s.
     pub relmse_ratio_to_sobol: Option<f64>,
-    /// Approximate 95 % interval of that ratio ([`crate::stats::ratio_interval`];
-    /// `[1, 1]` for `sobol` itself).
+    /// The 95 % interval of the paired relMSE ratio to `sobol` (the
+    /// `relmse` entry of `statistics`, copied by
+    /// [`crate::comparison::fill_statistics`]; `[1, 1]` for `sobol` itself).
     pub relmse_ratio_interval: Option<[f64; 2]>,
     /// Mean ± SE, 95 % interval and paired ratio to `sobol` of each compared
     /// metric ([`crate::comparison`]).
@@ -120,20 +121,15 @@ pub struct Images {
     pub renders: Vec<RgbImage>,
 }
 
-/// Fills every sampler's `relmse_ratio_to_sobol` and its interval from the
-/// `sobol` entry.
+/// Fills every sampler's `relmse_ratio_to_sobol` from the `sobol` entry
+/// (its interval comes with the paired statistics).
 pub fn fill_ratios(samplers: &mut [SamplerResult]) {
     let base = samplers
         .iter()
         .find(|s| s.name == "sobol")
-        .map(|s| (s.relmse, s.runs.len()));
+        .map(|s| s.relmse.mean);
     for s in samplers {
-        s.relmse_ratio_to_sobol = ratio(s.relmse.mean, base.map(|b| b.0.mean));
-        s.relmse_ratio_interval = if s.name == "sobol" {
-            s.relmse_ratio_to_sobol.map(|r| [r, r])
-        } else {
-            base.and_then(|(b, nb)| ratio_interval(s.relmse, s.runs.len(), b, nb))
-        };
+        s.relmse_ratio_to_sobol = ratio(s.relmse.mean, base);
     }
 }
 

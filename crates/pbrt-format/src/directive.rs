@@ -14,7 +14,7 @@ use crate::{ActiveTransform, FileKind, Loc, Param, ParamSet, ParserTarget};
 ///
 /// All numbers are `f64` exactly as written (the parser does not round to
 /// `f32`). Methods taking a [`ParamSet`] own it: it remembers which parameters
-/// lookups used (see [`ParamSet::warn_unused`]).
+/// lookups used (see [`ParamSet::finish`]).
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)] // each variant is the directive of the same name
 pub enum Directive {

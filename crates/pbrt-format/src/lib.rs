@@ -16,7 +16,8 @@
 //!
 //! Syntax errors are [`ParseError`]s with an [`ErrorKind`] and a location; the
 //! parser never panics on any input. [`Warnings`] collects deduplicated warnings,
-//! and [`ParamSet::warn_unused`] reports parameters a builder did not use.
+//! and [`ParamSet::finish`] reports parameters a builder did not use (and
+//! refuses single-value parameters with no or several values).
 //!
 //! Choices where pbrt-v4 and this crate could differ: numbers are kept as `f64`;
 //! a raw newline inside a string is an error (as in pbrt-v4); the pbrt-v3

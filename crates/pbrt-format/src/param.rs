@@ -5,7 +5,7 @@
 //! `rgb`. Values are stored by representation in [`ParamValues`].
 
 use std::fmt;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU8, Ordering};
 
 use crate::Loc;
 
@@ -147,8 +147,9 @@ pub struct Param {
     /// Location of the `"type name"` declaration string.
     pub loc: Loc,
     used: AtomicBool,
-    /// Read by a single-value getter (`get_float`, `get_int`, ...).
-    read_as_single: AtomicBool,
+    /// The number of values a single-value getter (`get_float`,
+    /// `get_point3`, ...) expects; 0 when none has read it.
+    single_arity: AtomicU8,
 }
 
 impl Param {
@@ -160,7 +161,7 @@ impl Param {
             values,
             loc,
             used: AtomicBool::new(false),
-            read_as_single: AtomicBool::new(false),
+            single_arity: AtomicU8::new(0),
         }
     }
 
@@ -169,15 +170,18 @@ impl Param {
         self.used.load(Ordering::Relaxed)
     }
 
-    /// Records that a single-value getter read the parameter.
-    pub fn mark_read_as_single(&self) {
-        self.read_as_single.store(true, Ordering::Relaxed);
+    /// Records that a single-value getter read the parameter as one item of
+    /// `arity` numbers or strings (1 for a float, 3 for a point3 or rgb).
+    pub fn mark_read_as_single(&self, arity: u8) {
+        self.single_arity.store(arity, Ordering::Relaxed);
     }
 
-    /// Whether a single-value getter read it although it holds no value or
-    /// several (pbrt-v4 refuses that; it is reported as a warning).
-    pub fn is_miscounted(&self) -> bool {
-        self.read_as_single.load(Ordering::Relaxed) && self.values.len() != 1
+    /// The number of values a single-value getter expected, if it holds a
+    /// different number (none, or several items): pbrt-v4 refuses that, and
+    /// [`crate::ParamSet::finish`] makes it an error.
+    pub fn miscount(&self) -> Option<usize> {
+        let arity = usize::from(self.single_arity.load(Ordering::Relaxed));
+        (arity > 0 && self.values.len() != arity).then_some(arity)
     }
 
     /// Marks the parameter used.
@@ -215,7 +219,7 @@ impl Clone for Param {
             values: self.values.clone(),
             loc: self.loc.clone(),
             used: AtomicBool::new(self.is_used()),
-            read_as_single: AtomicBool::new(self.read_as_single.load(Ordering::Relaxed)),
+            single_arity: AtomicU8::new(self.single_arity.load(Ordering::Relaxed)),
         }
     }
 }

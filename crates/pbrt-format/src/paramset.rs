@@ -4,10 +4,11 @@
 //! A lookup matches a parameter by name *and* type (as pbrt-v4 does): `get_float
 //! ("radius")` finds `"float radius"` but not `"integer radius"`. A successful lookup
 //! marks the parameter used; after building an object the scene builder calls
-//! [`ParamSet::warn_unused`] so that every parameter it did not understand is
-//! reported once, with its location.
+//! [`ParamSet::finish`]: a parameter read as one value that holds none or
+//! several is an error (as in pbrt-v4), and every parameter the builder did
+//! not understand is reported once, with its location.
 
-use crate::{Loc, Param, ParamType, ParamValues, Warnings};
+use crate::{ErrorKind, Loc, Param, ParamType, ParamValues, ParseError, Warnings};
 
 /// A spectrum-valued parameter, as found by [`ParamSet::get_spectrum`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -103,10 +104,11 @@ impl ParamSet {
         Some(p)
     }
 
-    /// Records a single-value read of `name` (see [`Param::is_miscounted`]).
-    fn single(&self, name: &str, types: &[ParamType]) {
+    /// Records a single-value read of `name` as one item of `arity` values
+    /// (see [`Param::miscount`]).
+    fn single(&self, name: &str, types: &[ParamType], arity: u8) {
         if let Some(p) = self.lookup(name, types) {
-            p.mark_read_as_single();
+            p.mark_read_as_single(arity);
         }
     }
 
@@ -116,7 +118,7 @@ impl ParamSet {
 
     /// First value of `"float name"`.
     pub fn get_float(&self, name: &str) -> Option<f64> {
-        self.single(name, &[ParamType::Float]);
+        self.single(name, &[ParamType::Float], 1);
         self.get_floats(name)?.first().copied()
     }
 
@@ -140,7 +142,7 @@ impl ParamSet {
 
     /// First value of `"integer name"`.
     pub fn get_int(&self, name: &str) -> Option<i64> {
-        self.single(name, &[ParamType::Integer]);
+        self.single(name, &[ParamType::Integer], 1);
         self.get_ints(name)?.first().copied()
     }
 
@@ -151,7 +153,7 @@ impl ParamSet {
 
     /// First value of `"bool name"`.
     pub fn get_bool(&self, name: &str) -> Option<bool> {
-        self.single(name, &[ParamType::Bool]);
+        self.single(name, &[ParamType::Bool], 1);
         match &self.lookup(name, &[ParamType::Bool])?.values {
             ParamValues::Bools(v) => v.first().copied(),
             _ => None,
@@ -170,7 +172,7 @@ impl ParamSet {
 
     /// First value of `"string name"`.
     pub fn get_string(&self, name: &str) -> Option<&str> {
-        self.single(name, &[ParamType::String]);
+        self.single(name, &[ParamType::String], 1);
         self.get_strings(name)?.first().map(String::as_str)
     }
 
@@ -204,13 +206,15 @@ impl ParamSet {
         self.floats_of(name, ParamType::Normal3).map(chunks::<3>)
     }
 
-    /// First triple of `"point3 name"`.
+    /// The triple of `"point3 name"`.
     pub fn get_point3(&self, name: &str) -> Option<[f64; 3]> {
+        self.single(name, &[ParamType::Point3], 3);
         self.get_point3s(name)?.first().copied()
     }
 
-    /// First triple of `"vector3 name"`.
+    /// The triple of `"vector3 name"`.
     pub fn get_vector3(&self, name: &str) -> Option<[f64; 3]> {
+        self.single(name, &[ParamType::Vector3], 3);
         self.get_vector3s(name)?.first().copied()
     }
 
@@ -277,23 +281,33 @@ impl ParamSet {
         self.params.iter().filter(|p| !p.is_used())
     }
 
-    /// Adds to `warnings`, for each unused parameter, `{context}: parameter "{type
-    /// name}" is not used` at the parameter's location (deduplicated by
-    /// [`Warnings`], so a parameter is reported once however often this is called).
-    pub fn warn_unused(&self, context: &str, warnings: &mut Warnings) {
+    /// The end of building an object from this list. A parameter that a
+    /// single-value getter read but that holds no value or more than one
+    /// (`"float radius" [ ]`, `"float radius" [ 1 2 ]`, two `point3`s; the
+    /// parser has already checked `rgb`, `texture` and spectrum counts) is
+    /// an error at its location, as in pbrt-v4 ("More than one value
+    /// provided for parameter"). Then adds to `warnings`, for each unused
+    /// parameter, `{context}: parameter "{type name}" is not used` at the
+    /// parameter's location (deduplicated by [`Warnings`], so a parameter is
+    /// reported once however often this is called).
+    pub fn finish(&self, context: &str, warnings: &mut Warnings) -> Result<(), ParseError> {
+        if let Some((p, arity)) = self.params.iter().find_map(|p| Some((p, p.miscount()?))) {
+            let n = p.values.len();
+            let want = match arity {
+                1 => "one value".to_string(),
+                a => format!("{a} values (one item)"),
+            };
+            let message = format!(
+                "{context}: parameter \"{}\" takes {want}, got {n}",
+                p.declaration()
+            );
+            return Err(ParseError::new(ErrorKind::WrongValueCount, &p.loc, message));
+        }
         for p in self.unused() {
             let message = format!("{context}: parameter \"{}\" is not used", p.declaration());
             warnings.warn(&p.loc, message);
         }
-        for p in self.params.iter().filter(|p| p.is_miscounted()) {
-            let n = p.values.len();
-            let using = if n == 0 { "the default" } else { "the first" };
-            let message = format!(
-                "{context}: parameter \"{}\" takes one value, got {n}; using {using}",
-                p.declaration()
-            );
-            warnings.warn(&p.loc, message);
-        }
+        Ok(())
     }
 
     /// Location of the first parameter, if any (for messages about the whole list).

@@ -40,20 +40,20 @@ impl ParserTarget for Tracker {
             D::Shape(ty, p) if ty == "sphere" => {
                 self.spheres
                     .push((p.float_or("radius", 1.0), self.material.clone()));
-                p.warn_unused("Shape \"sphere\"", &mut self.warnings);
+                p.finish("Shape \"sphere\"", &mut self.warnings)?;
             }
             D::Shape(ty, p) => {
                 let what = format!("Shape \"{ty}\"");
-                p.warn_unused(&what, &mut self.warnings);
+                p.finish(&what, &mut self.warnings)?;
                 self.ignore(loc, &what)
             }
             D::Material(ty, p) => {
-                p.warn_unused(&format!("Material \"{ty}\""), &mut self.warnings);
+                p.finish(&format!("Material \"{ty}\""), &mut self.warnings)?;
                 self.material = ty;
             }
             other => {
                 if let Some(p) = other.params() {
-                    p.warn_unused(keyword, &mut self.warnings);
+                    p.finish(keyword, &mut self.warnings)?;
                 }
                 self.ignore(loc, keyword)
             }

@@ -106,8 +106,8 @@ fn unused_parameters_are_warned_once_with_their_location() {
     );
     let mut w = Warnings::new();
     assert_eq!(p.get_float("radius"), Some(1.0));
-    p.warn_unused("Shape \"sphere\"", &mut w);
-    p.warn_unused("Shape \"sphere\"", &mut w); // a second use of the same list
+    p.finish("Shape \"sphere\"", &mut w).unwrap();
+    p.finish("Shape \"sphere\"", &mut w).unwrap(); // a second use of the same list
     let shown: Vec<String> = w.iter().map(ToString::to_string).collect();
     assert_eq!(
         shown,
@@ -116,6 +116,60 @@ fn unused_parameters_are_warned_once_with_their_location() {
             "test.pbrt:4:3: warning: Shape \"sphere\": parameter \"string bogus\" is not used",
         ]
     );
+}
+
+#[test]
+fn a_single_value_parameter_with_none_or_several_is_an_error_at_its_location() {
+    // pbrt-v4's ParameterDictionary refuses these ("No values provided",
+    // "More than one value provided for parameter").
+    let cases = [
+        (
+            "\"float radius\" [ ]",
+            "\"float radius\" takes one value, got 0",
+        ),
+        (
+            "\"float radius\" [ 1 2 ]",
+            "\"float radius\" takes one value, got 2",
+        ),
+        (
+            "\"string radius\" [ \"a\" \"b\" ]",
+            "\"string radius\" takes one value, got 2",
+        ),
+        (
+            "\"integer radius\" [ ]",
+            "\"integer radius\" takes one value, got 0",
+        ),
+        (
+            "\"bool radius\" [ true false ]",
+            "\"bool radius\" takes one value, got 2",
+        ),
+        (
+            "\"point3 radius\" [ 0 0 0 1 1 1 ]",
+            "\"point3 radius\" takes 3 values (one item), got 6",
+        ),
+    ];
+    for (param, message) in cases {
+        let p = params_of(&format!("Shape \"sphere\"\n  {param}"));
+        let _ = p.get_float("radius");
+        let _ = p.get_string("radius");
+        let _ = p.get_int("radius");
+        let _ = p.get_bool("radius");
+        let _ = p.get_point3("radius");
+        let mut w = Warnings::new();
+        let e = p
+            .finish("Shape \"sphere\"", &mut w)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            e,
+            format!("test.pbrt:2:3: Shape \"sphere\": parameter {message}")
+        );
+    }
+    // Array reads take any count, and one value is right for a single read.
+    let p = params_of("Shape \"sphere\" \"float radius\" [ 1 2 ] \"float zmin\" 1");
+    assert_eq!(p.get_floats("radius"), Some(&[1.0, 2.0][..]));
+    assert_eq!(p.get_float("zmin"), Some(1.0));
+    assert!(p.finish("Shape \"sphere\"", &mut Warnings::new()).is_ok());
 }
 
 #[test]

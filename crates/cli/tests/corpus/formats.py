@@ -107,6 +107,12 @@ def images(case, write, render, BASE):
     for name in ["garbage.exr", "truncated.png", "huge.png", "pfm-huge"]:
         fname = name if "." in name else name + ".pfm"
         case("image", f"flag-envmap-{fname.replace('.', '-')}", render(base_ref, "--envmap", "{F}/image/" + fname))
+    # A texture or environment map that is a directory or a device.
+    for cid, target in [("directory", "."), ("dev-zero", "/dev/zero")]:
+        env_scene = BASE.replace('LightSource "point"', f'LightSource "infinite" "string filename" "{target}"\nLightSource "point"')
+        case("image", f"envmap-is-{cid}", render(write(f"image/envmap-is-{cid}.pbrt", env_scene)))
+        tex_scene = BASE.replace("Material", f'Texture "t" "spectrum" "imagemap" "string filename" "{target}"\nMaterial')
+        case("image", f"texture-is-{cid}", render(write(f"image/texture-is-{cid}.pbrt", tex_scene)))
     case("image", "flag-envmap-directory", render(base_ref, "--envmap", "{F}/image"))
     case("image", "flag-envmap-dev-zero", render(base_ref, "--envmap", "/dev/zero"))
     case("image", "flag-envmap-no-infinite-light", render("{F}/scene/base.pbrt", "--envmap", "{F}/image/ok.pfm"))

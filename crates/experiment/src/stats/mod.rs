@@ -54,21 +54,6 @@ pub fn ratio(value: f64, baseline: Option<f64>) -> Option<f64> {
     baseline.filter(|b| *b > 0.0).map(|b| value / b)
 }
 
-/// An approximate 95 % interval of `a.mean / b.mean`, each a mean of
-/// independent runs (`na`, `nb` of them): the ratio times `exp(±1.96 s)`,
-/// `s² = (sd_a / (mean_a √na))² + (sd_b / (mean_b √nb))²` (the delta
-/// method on the log of the ratio). `None` when a mean is not positive or
-/// a side has fewer than two runs.
-pub fn ratio_interval(a: MeanSd, na: usize, b: MeanSd, nb: usize) -> Option<[f64; 2]> {
-    if a.mean <= 0.0 || b.mean <= 0.0 || na < 2 || nb < 2 {
-        return None;
-    }
-    let rel = |m: MeanSd, n: usize| m.sd / (m.mean * (n as f64).sqrt());
-    let s = (rel(a, na).powi(2) + rel(b, nb).powi(2)).sqrt();
-    let r = a.mean / b.mean;
-    Some([r * (-1.96 * s).exp(), r * (1.96 * s).exp()])
-}
-
 /// Least-squares slope of `log2 y` against `log2 x` over the points with
 /// both coordinates positive; `None` with fewer than two such points.
 pub fn log_log_slope(points: &[[f64; 2]]) -> Option<f64> {
@@ -119,23 +104,6 @@ mod tests {
         assert_eq!(ratio(3.0, Some(4.0)), Some(0.75));
         assert_eq!(ratio(3.0, Some(0.0)), None);
         assert_eq!(ratio(3.0, None), None);
-    }
-
-    #[test]
-    fn ratio_interval_by_the_delta_method() {
-        let m = |mean, sd| MeanSd { mean, sd };
-        // Exact runs: the interval is the ratio itself.
-        assert_eq!(
-            ratio_interval(m(2.0, 0.0), 4, m(4.0, 0.0), 4),
-            Some([0.5, 0.5])
-        );
-        // Relative standard errors 0.1/1/√4 = 0.05 each: s = 0.05 √2.
-        let [lo, hi] = ratio_interval(m(1.0, 0.1), 4, m(1.0, 0.1), 4).unwrap();
-        let s = 0.05 * 2f64.sqrt();
-        assert!((lo - (-1.96 * s).exp()).abs() < 1e-12 && (hi - (1.96 * s).exp()).abs() < 1e-12);
-        assert!((lo * hi - 1.0).abs() < 1e-12);
-        assert_eq!(ratio_interval(m(1.0, 0.1), 1, m(1.0, 0.1), 4), None);
-        assert_eq!(ratio_interval(m(0.0, 0.1), 3, m(1.0, 0.1), 4), None);
     }
 
     #[test]

@@ -161,7 +161,7 @@ impl PbrtLoader {
                 return Ok(());
             }
         };
-        ps.warn_unused(&format!("LightSource \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("LightSource \"{ty}\""), &mut self.warnings)?;
         let spectrum = self.light_spectrum(
             ps,
             if ty == "point" || ty == "spot" {
@@ -208,7 +208,7 @@ impl PbrtLoader {
             power: Self::positive(ps, "power"),
             spectrum: self.light_spectrum(ps, "L"),
         };
-        ps.warn_unused("AreaLightSource \"diffuse\"", &mut self.warnings);
+        ps.finish("AreaLightSource \"diffuse\"", &mut self.warnings)?;
         self.state.cur.area = Some(spec);
         Ok(())
     }

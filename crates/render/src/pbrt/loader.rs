@@ -263,8 +263,8 @@ impl ParserTarget for PbrtLoader {
             }
             Directive::Camera(ty, params) => self.camera_directive(&ty, &params, loc)?,
             Directive::Film(ty, params) => self.film_directive(&ty, &params, loc)?,
-            Directive::Sampler(ty, params) => self.sampler_directive(&ty, &params, loc),
-            Directive::Integrator(ty, params) => self.integrator_directive(&ty, &params, loc),
+            Directive::Sampler(ty, params) => self.sampler_directive(&ty, &params, loc)?,
+            Directive::Integrator(ty, params) => self.integrator_directive(&ty, &params, loc)?,
             Directive::PixelFilter(ty, params) => self.filter_directive(&ty, &params, loc)?,
             Directive::Accelerator(..) => {
                 self.unsupported(loc, "Accelerator (the renderer always uses its SAH BVH)")

@@ -11,7 +11,7 @@ use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};
 use crate::bsdf::{ConductorSpec, Material, MixMaterial, Roughness};
 use crate::spectrum::named::{NamedSpectrum, intern_measured, named_metal, planck};
 use crate::spectrum::{Rgb, spectrum_file_to_rgb, spectrum_samples_to_rgb};
-use crate::texture::{FloatTexture, SpectrumTexture, Texture, TextureEvalContext};
+use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, SpectrumOrTexture, SpectrumValue};
 use std::path::Path;
 use std::sync::Arc;
@@ -80,7 +80,8 @@ impl PbrtLoader {
     }
 
     /// A spectrum-or-texture parameter as an RGB texture (a constant one
-    /// for values; a float texture named here is used as a grey texture).
+    /// for values). As in pbrt-v4, the texture named must be a spectrum
+    /// texture: a float texture there is an error at the parameter.
     pub(super) fn rgb_tex(
         &mut self,
         ps: &ParamSet,
@@ -91,25 +92,40 @@ impl PbrtLoader {
         match ps.get_spectrum_or_texture(name) {
             None => Ok(default.into()),
             Some(SpectrumOrTexture::Value(v)) => Ok(self.spectrum_value(v, false, loc)?.into()),
-            Some(SpectrumOrTexture::Texture(t)) => {
-                if let Some(tex) = self.textures.spectrum(t) {
-                    return Ok(tex);
-                }
-                match self.textures.float(t) {
-                    Some(f) => Ok(Texture::Scale {
-                        tex: Arc::new(Rgb::ONE.into()),
-                        scale: Arc::new(f),
-                    }),
-                    None => Err(ParseError::scene(
-                        loc,
-                        format!("texture \"{t}\" is not defined"),
-                    )),
-                }
-            }
+            Some(SpectrumOrTexture::Texture(t)) => self
+                .textures
+                .spectrum(t)
+                .ok_or_else(|| self.texture_error(ps, name, t, "float", "spectrum", loc)),
         }
     }
 
-    /// A float-or-texture parameter as a float texture (`default` when absent).
+    /// The error for parameter `name` naming texture `t`, which is not a
+    /// `wanted` texture: it is an `other` one, or not defined. It is located
+    /// at the parameter (pbrt-v4: "Couldn't find spectrum texture named").
+    fn texture_error(
+        &self,
+        ps: &ParamSet,
+        name: &str,
+        t: &str,
+        other: &str,
+        wanted: &str,
+        loc: &Loc,
+    ) -> ParseError {
+        let is_other = match other {
+            "float" => self.textures.float(t).is_some(),
+            _ => self.textures.spectrum(t).is_some(),
+        };
+        let why = if is_other {
+            format!("is a {other} texture; a {wanted} texture is needed")
+        } else {
+            "is not defined".to_string()
+        };
+        let at = ps.find(name).map_or(loc, |p| &p.loc);
+        ParseError::scene(at, format!("parameter \"{name}\": texture \"{t}\" {why}"))
+    }
+
+    /// A float-or-texture parameter as a float texture (`default` when
+    /// absent); the texture named must be a float texture.
     pub(super) fn float_tex(
         &mut self,
         ps: &ParamSet,
@@ -120,9 +136,10 @@ impl PbrtLoader {
         match ps.get_float_or_texture(name) {
             None => Ok(default),
             Some(FloatOrTexture::Value(v)) => Ok((v as f32).into()),
-            Some(FloatOrTexture::Texture(t)) => self.textures.float(t).ok_or_else(|| {
-                ParseError::scene(loc, format!("float texture \"{t}\" is not defined"))
-            }),
+            Some(FloatOrTexture::Texture(t)) => self
+                .textures
+                .float(t)
+                .ok_or_else(|| self.texture_error(ps, name, t, "spectrum", "float", loc)),
         }
     }
 
@@ -341,12 +358,12 @@ impl PbrtLoader {
         let context = format!("material \"{ty}\"");
         let m = match ty {
             "" | "none" | "interface" => {
-                ps.warn_unused(&context, &mut self.warnings);
+                ps.finish(&context, &mut self.warnings)?;
                 return Ok(MatRef::Interface);
             }
             "mix" => {
                 let m = self.mix_material(ps, loc)?;
-                ps.warn_unused(&context, &mut self.warnings);
+                ps.finish(&context, &mut self.warnings)?;
                 return Ok(m);
             }
             _ => self.build_material(ty, ps, loc)?,
@@ -368,7 +385,7 @@ impl PbrtLoader {
                 self.unsupported(loc, &what);
             }
         }
-        ps.warn_unused(&context, &mut self.warnings);
+        ps.finish(&context, &mut self.warnings)?;
         self.counts.materials += 1;
         Ok(self.add_material(m))
     }

@@ -57,7 +57,7 @@ impl PbrtLoader {
             ));
         }
         self.film.exposure_time = (close - open) as f32;
-        ps.warn_unused(&format!("Camera \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("Camera \"{ty}\""), &mut self.warnings)?;
         self.camera = Some(CameraSpec {
             world_from_camera,
             params,
@@ -106,12 +106,17 @@ impl PbrtLoader {
         for p in ["diagonal", "savefp16", "whitebalance"] {
             ps.mark_used(p);
         }
-        ps.warn_unused(&format!("Film \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("Film \"{ty}\""), &mut self.warnings)?;
         Ok(())
     }
 
     /// `Sampler`: its type mapped to a lowdisc sampler, and `pixelsamples`.
-    pub(super) fn sampler_directive(&mut self, ty: &str, ps: &ParamSet, loc: &Loc) {
+    pub(super) fn sampler_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
         let rand = ps.get_string("randomization").map(str::to_string);
         let spp = if ty == "stratified" {
             let x = ps.int_or("xsamples", 4);
@@ -154,11 +159,16 @@ impl PbrtLoader {
         }
         self.settings.sampler = Some(name);
         self.settings.sampler_type = Some(ty.to_string());
-        ps.warn_unused(&format!("Sampler \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("Sampler \"{ty}\""), &mut self.warnings)
     }
 
     /// `Integrator`: the path tracer's maximum depth.
-    pub(super) fn integrator_directive(&mut self, ty: &str, ps: &ParamSet, loc: &Loc) {
+    pub(super) fn integrator_directive(
+        &mut self,
+        ty: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<(), ParseError> {
         match ty {
             "path" => {}
             "volpath" => self.warn(
@@ -183,7 +193,7 @@ impl PbrtLoader {
             }
         }
         self.settings.integrator = Some(ty.to_string());
-        ps.warn_unused(&format!("Integrator \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("Integrator \"{ty}\""), &mut self.warnings)
     }
 
     /// `PixelFilter`.
@@ -204,7 +214,7 @@ impl PbrtLoader {
         };
         self.filter = Filter::create(ty, &p)
             .map_err(|e| ParseError::scene(loc, format!("PixelFilter: {e}")))?;
-        ps.warn_unused(&format!("PixelFilter \"{ty}\""), &mut self.warnings);
+        ps.finish(&format!("PixelFilter \"{ty}\""), &mut self.warnings)?;
         Ok(())
     }
 }

@@ -195,7 +195,7 @@ impl PbrtLoader {
             }
         }
         def.params
-            .warn_unused(&format!("Shape \"{}\"", def.ty), &mut self.warnings);
+            .finish(&format!("Shape \"{}\"", def.ty), &mut self.warnings)?;
         let Some(material) = self.material_index(def.material) else {
             self.warnings.warn_once(
                 &loc,

@@ -9,7 +9,8 @@
 //! `cylindrical` mappings (the `uv` mapping is used), the `octahedralsphere`
 //! wrap mode (`repeat` is used) and the procedural classes (`bilerp`,
 //! `dots`, `fbm`, `marble`, `windy`, `wrinkled`, `ptex`, `directionmix`),
-//! which become a constant 0.5. A missing image file becomes grey 0.5.
+//! which become a constant 0.5. A missing or unreadable image file is an
+//! error, as in pbrt-v4 ("file not found").
 
 use crate::math::Vec3;
 use crate::pbrt::loader::PbrtLoader;
@@ -66,12 +67,8 @@ impl PbrtLoader {
         }
     }
 
-    /// An `imagemap` texture, or `None` (with a warning) when the file is absent.
-    fn image_texture(
-        &mut self,
-        ps: &ParamSet,
-        loc: &Loc,
-    ) -> Result<Option<ImageTexture>, ParseError> {
+    /// An `imagemap` texture; its file must exist.
+    fn image_texture(&mut self, ps: &ParamSet, loc: &Loc) -> Result<ImageTexture, ParseError> {
         let file = ps
             .get_string("filename")
             .ok_or_else(|| ParseError::scene(loc, "imagemap: \"string filename\" is required"))?;
@@ -97,23 +94,20 @@ impl PbrtLoader {
         let invert = ps.bool_or("invert", false);
         if let Err(e) = lowdisc_files::check_input(&path, u64::MAX) {
             let why = e.io_error();
-            self.warn(
-                loc,
-                format!("imagemap: {}: {why}; using grey 0.5", path.display()),
-            );
-            return Ok(None);
+            let message = format!("imagemap: {}: {why}", path.display());
+            return Err(ParseError::scene(loc, message));
         }
         let image = self
             .textures
             .load_image(&path, encoding)
             .map_err(|e| ParseError::scene(loc, format!("imagemap: {e}")))?;
-        Ok(Some(ImageTexture {
+        Ok(ImageTexture {
             image,
             mapping,
             wrap,
             scale,
             invert,
-        }))
+        })
     }
 
     /// `Texture "name" "float"|"spectrum" "class" params`.
@@ -147,7 +141,7 @@ impl PbrtLoader {
         if replaced {
             self.warn(loc, format!("texture \"{name}\" redefined"));
         }
-        ps.warn_unused(&format!("texture \"{name}\""), &mut self.warnings);
+        ps.finish(&format!("texture \"{name}\""), &mut self.warnings)?;
         Ok(())
     }
 
@@ -181,10 +175,7 @@ impl PbrtLoader {
                 tex1: sub(self, "tex1", 1.0)?,
                 tex2: sub(self, "tex2", 0.0)?,
             },
-            "imagemap" => match self.image_texture(ps, loc)? {
-                Some(t) => Texture::Image(Arc::new(t)),
-                None => Texture::Constant(T::splat(0.5)),
-            },
+            "imagemap" => Texture::Image(Arc::new(self.image_texture(ps, loc)?)),
             _ => {
                 let what = format!("texture class \"{class}\" (a constant 0.5 is used)");
                 self.unsupported(loc, &what);
