@@ -50,6 +50,7 @@
 //!   above 31 do not enter the point and are hashed into the scramble seed,
 //!   and unscrambled use needs `2 log2 R + m <= 32`.
 
+use super::zsobol_joint::GroupIndices;
 use super::{SEED_PAD, WordSampler, ZSobolSampler};
 use crate::hash::hash_words;
 use crate::{Error, RandomizeStrategy};
@@ -59,8 +60,6 @@ pub const INDEX_LANE: u32 = 4;
 /// Dimension key of group 0 (groups are `GROUP_KEY + g`), apart from the
 /// keys of `zsobol` and `zsobol-joint`.
 const GROUP_KEY: u64 = 3 << 33;
-/// Groups whose permuted index is kept for the current sample.
-const CACHED_GROUPS: usize = 8;
 
 /// The `(group, lane)` of sampler dimension `d`; see the module table.
 pub fn slot(d: u32) -> (u64, u32) {
@@ -97,10 +96,8 @@ pub struct ZOrderSzSampler {
     /// `m`, the bits of a pixel's block.
     block_bits: u32,
     dimension: u32,
-    /// Permuted indices of groups `0..CACHED_GROUPS` for the current sample.
-    indices: [u64; CACHED_GROUPS],
-    /// Bit `g` set when `indices[g]` is computed.
-    known: u32,
+    /// The groups' permuted indices at the current sample.
+    indices: GroupIndices,
 }
 
 impl ZOrderSzSampler {
@@ -122,24 +119,8 @@ impl ZOrderSzSampler {
             block_mask: ((1u64 << block_bits) - 1) as u32,
             block_bits,
             dimension: 0,
-            indices: [0; CACHED_GROUPS],
-            known: 0,
+            indices: GroupIndices::default(),
         })
-    }
-
-    /// The permuted sequence index of `group` at the current sample.
-    #[inline]
-    fn group_index(&mut self, group: u64) -> u64 {
-        let cached = usize::try_from(group).ok().filter(|&g| g < CACHED_GROUPS);
-        match cached {
-            Some(g) if self.known & (1 << g) != 0 => self.indices[g],
-            Some(g) => {
-                self.indices[g] = self.order.sample_index(GROUP_KEY + group);
-                self.known |= 1 << g;
-                self.indices[g]
-            }
-            None => self.order.sample_index(GROUP_KEY + group),
-        }
     }
 
     /// The unscrambled word of `lane` at sequence index `index`.
@@ -156,7 +137,7 @@ impl ZOrderSzSampler {
 
     /// The scrambled word of slot `(group, lane)` at the current sample.
     fn word(&mut self, (group, lane): (u64, u32)) -> u32 {
-        let index = self.group_index(group);
+        let index = self.indices.get(&self.order, group, GROUP_KEY + group);
         let seed = hash_words(&[self.seed, SEED_PAD, GROUP_KEY + group, index >> 32]);
         self.strategy.apply(self.lane_word(index, lane), seed, lane)
     }
@@ -170,7 +151,7 @@ impl WordSampler for ZOrderSzSampler {
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         WordSampler::start_pixel_sample(&mut self.order, pixel, sample_index, 0);
         self.dimension = dimension;
-        self.known = 0;
+        self.indices.clear();
     }
 
     fn get_1d_word(&mut self) -> u32 {

@@ -91,10 +91,42 @@ pub struct ZSobolJointSampler {
     strategy: RandomizeStrategy,
     seed: u64,
     dimension: u32,
-    /// Permuted indices of groups `0..CACHED_GROUPS` for the current sample.
+    /// The groups' permuted indices at the current sample.
+    indices: GroupIndices,
+}
+
+/// The permuted Z-order indices of the current sample's dimension groups,
+/// each computed on first use; groups `0..CACHED_GROUPS` are kept until the
+/// next sample ([`Self::clear`]), later groups are recomputed at every use.
+/// Shared by the group-padded Z-order samplers (this module's and
+/// `zorder-sz`).
+#[derive(Debug, Clone, Default)]
+pub(super) struct GroupIndices {
+    /// Permuted indices of groups `0..CACHED_GROUPS`.
     indices: [u64; CACHED_GROUPS],
     /// Bit `g` set when `indices[g]` is computed.
     known: u32,
+}
+
+impl GroupIndices {
+    /// Forgets every kept index (a new sample starts).
+    pub(super) fn clear(&mut self) {
+        self.known = 0;
+    }
+
+    /// The permuted index of `group`, whose dimension key is `key`, at
+    /// `order`'s current sample.
+    #[inline]
+    pub(super) fn get(&mut self, order: &ZSobolSampler, group: u64, key: u64) -> u64 {
+        let Some(slot) = usize::try_from(group).ok().filter(|&g| g < CACHED_GROUPS) else {
+            return order.sample_index(key);
+        };
+        if self.known & (1 << slot) == 0 {
+            self.indices[slot] = order.sample_index(key);
+            self.known |= 1 << slot;
+        }
+        self.indices[slot]
+    }
 }
 
 impl ZSobolJointSampler {
@@ -114,27 +146,13 @@ impl ZSobolJointSampler {
             strategy,
             seed,
             dimension: 0,
-            indices: [0; CACHED_GROUPS],
-            known: 0,
+            indices: GroupIndices::default(),
         })
-    }
-
-    /// The permuted sequence index of `group` at the current sample.
-    #[inline]
-    fn index(&mut self, group: u64) -> u64 {
-        let Some(slot) = usize::try_from(group).ok().filter(|&g| g < CACHED_GROUPS) else {
-            return self.order.sample_index(GROUP_KEY + group);
-        };
-        if self.known & (1 << slot) == 0 {
-            self.indices[slot] = self.order.sample_index(GROUP_KEY + group);
-            self.known |= 1 << slot;
-        }
-        self.indices[slot]
     }
 
     /// The scrambled word of `lane` in `group` at the current sample.
     fn word(&mut self, (group, lane): (u64, u32)) -> u32 {
-        let index = self.index(group);
+        let index = self.indices.get(&self.order, group, GROUP_KEY + group);
         let seed = hash_words(&[self.seed, SEED_PAD, GROUP_KEY + group, index >> 32]);
         self.strategy.apply(sample(index as u32, lane), seed, lane)
     }
@@ -148,7 +166,7 @@ impl WordSampler for ZSobolJointSampler {
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         WordSampler::start_pixel_sample(&mut self.order, pixel, sample_index, 0);
         self.dimension = dimension;
-        self.known = 0;
+        self.indices.clear();
     }
 
     fn get_1d_word(&mut self) -> u32 {
