@@ -274,3 +274,49 @@ fn single_value_parameters_with_no_or_several_values_are_errors() {
         );
     }
 }
+
+#[test]
+fn transforms_that_overflow_f32_are_errors_at_the_directive() {
+    for (directive, line, what) in [
+        ("Translate 1e39 0 0", 5, "Translate needs finite offsets"),
+        ("Scale 1e39 1 1", 5, "Scale needs finite, non-zero factors"),
+        ("Scale 0 1 1", 5, "Scale needs finite, non-zero factors"),
+        (
+            "Scale 1e30 1e30 1e30\nScale 1e30 1e30 1e30",
+            6,
+            "the current transform overflows",
+        ),
+    ] {
+        let scene = format!("{CAMERA}{directive}\nShape \"sphere\"\n");
+        let e = load_text("transform-overflow", &scene).unwrap_err();
+        assert!(
+            e.contains(&format!("scene.pbrt:{line}:1: ")) && e.contains(what),
+            "{directive}: {e}"
+        );
+    }
+    // Large but finite transforms stay accepted.
+    let scene = format!("{CAMERA}Scale 1e18 1e18 1e18\nShape \"sphere\" \"float radius\" 1e-18\n");
+    load_text("transform-large", &scene).unwrap();
+}
+
+#[test]
+fn an_emissive_mesh_with_a_degenerate_triangle_loads_and_that_triangle_emits_nothing() {
+    // Triangle 1 repeats a vertex: no area. pbrt-v4 renders such meshes.
+    let scene = format!(
+        "{CAMERA}AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [ 2 2 2 ]\n\
+         Shape \"trianglemesh\" \"integer indices\" [ 0 1 2 0 0 1 ] \
+         \"point3 P\" [ 0 0 0 1 0 0 0 1 0 ]\nAttributeEnd\n"
+    );
+    let loaded = load_text("degenerate-emitter", &scene).unwrap();
+    let powers: Vec<f32> = loaded
+        .scene
+        .lights()
+        .iter()
+        .map(|l| l.phi().average())
+        .collect();
+    assert_eq!(powers.len(), 2, "{powers:?}");
+    // The unit right triangle: area 1/2, power L * pi * area.
+    let expected = 2.0 * std::f32::consts::PI * 0.5;
+    assert!((powers[0] - expected).abs() < 1e-5 * expected, "{powers:?}");
+    assert_eq!(powers[1], 0.0);
+}

@@ -28,7 +28,7 @@ pub enum AreaShape {
 }
 
 impl AreaShape {
-    /// Copies primitive `prim` of `shapes`; errors for a triangle without area.
+    /// Copies primitive `prim` of `shapes`; errors for a primitive it lacks.
     pub fn from_prim(shapes: &ShapeSet, prim: Prim) -> Result<Self, LightError> {
         Ok(match prim {
             Prim::Triangle { mesh, tri } => {
@@ -39,14 +39,14 @@ impl AreaShape {
                 let m = m.ok_or_else(|| {
                     LightError::InvalidParameter(format!("no primitive {prim:?}"))
                 })?;
-                // The normal at the centroid carries the mesh's orientation rules.
+                // The normal at the centroid carries the mesh's orientation
+                // rules. A degenerate triangle (no area: exported meshes
+                // have them) keeps a zero normal; it emits no power, so the
+                // light sampler never picks it, and no ray can hit it.
                 let s = m.sample(tri as usize, Point2::new(4.0 / 9.0, 0.5));
-                let s = s.ok_or_else(|| {
-                    LightError::InvalidParameter("area light triangle has no area".into())
-                })?;
                 AreaShape::Triangle {
                     p: m.vertices(tri as usize),
-                    n: s.n,
+                    n: s.map_or(Normal3::new(0.0, 0.0, 0.0), |s| s.n),
                 }
             }
             Prim::Sphere(i) => AreaShape::Sphere(Self::get(&shapes.spheres, i, prim)?),
@@ -125,12 +125,15 @@ pub struct DiffuseAreaLight {
 
 impl DiffuseAreaLight {
     /// An area light on `shape`; errors for negative or non-finite `l` or
-    /// `scale` or a shape without area.
+    /// `scale` or a shape whose area is not finite. A shape of area 0 (a
+    /// degenerate triangle) makes a light of no power: [`Self::phi`] is 0,
+    /// its samples are `None` and its densities 0, as in pbrt-v4, which
+    /// renders such meshes.
     pub fn new(shape: AreaShape, l: Rgb, scale: f32, two_sided: bool) -> Result<Self, LightError> {
         check_rgb("L", l)?;
         check_scalar("scale", scale)?;
         let area = shape.area();
-        if !(area > 0.0 && area.is_finite()) {
+        if !(area >= 0.0 && area.is_finite()) {
             return Err(LightError::InvalidParameter(format!(
                 "area light shape has area {area}"
             )));

@@ -234,13 +234,13 @@ impl ParserTarget for PbrtLoader {
                 }
             }
             Directive::Identity => self.state.cur.ctm = Transform::IDENTITY,
-            Directive::Translate(d) => self.state.translate(d),
+            Directive::Translate(d) => self.state.translate(d, loc)?,
             Directive::Scale(s) => self.state.scale(s, loc)?,
             Directive::Rotate(a, axis) => self.state.rotate(a, axis, loc)?,
             Directive::LookAt(e, l, u) => self.state.look_at(e, l, u, loc)?,
             Directive::ConcatTransform(m) => {
                 let t = pbrt_matrix(m, loc)?;
-                self.state.concat(t);
+                self.state.concat(t, loc)?;
             }
             Directive::Transform(m) => self.state.cur.ctm = pbrt_matrix(m, loc)?,
             Directive::CoordinateSystem(name) => {

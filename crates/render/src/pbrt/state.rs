@@ -85,21 +85,42 @@ pub(crate) fn pbrt_matrix(m: [f64; 16], loc: &Loc) -> Result<Transform, ParseErr
 }
 
 impl StateStack {
-    /// `ctm = ctm * t`.
-    pub fn concat(&mut self, t: Transform) {
-        self.cur.ctm = self.cur.ctm * t;
+    /// `ctm = ctm * t`, refused (and the transform left as it was) when the
+    /// product or its inverse is no longer finite in `f32`: a transform that
+    /// overflows would place the geometry after it at infinity or NaN.
+    pub fn concat(&mut self, t: Transform, loc: &Loc) -> Result<(), ParseError> {
+        let ctm = self.cur.ctm * t;
+        let finite = |m: &Matrix4| m.m.iter().flatten().all(|v| v.is_finite());
+        if !(finite(ctm.matrix()) && finite(ctm.inverse_matrix())) {
+            return Err(ParseError::scene(
+                loc,
+                "the current transform overflows (entries beyond f32's range)",
+            ));
+        }
+        self.cur.ctm = ctm;
+        Ok(())
     }
 
-    /// Applies a transform directive.
-    pub fn translate(&mut self, d: [f64; 3]) {
-        self.concat(Transform::translate(v3(d)));
+    /// `Translate`.
+    pub fn translate(&mut self, d: [f64; 3], loc: &Loc) -> Result<(), ParseError> {
+        let d = v3(d);
+        if !d.is_finite() {
+            return Err(ParseError::scene(
+                loc,
+                "Translate needs finite offsets (within f32's range)",
+            ));
+        }
+        self.concat(Transform::translate(d), loc)
     }
     /// `Scale`.
     pub fn scale(&mut self, s: [f64; 3], loc: &Loc) -> Result<(), ParseError> {
-        let t = Transform::scale(v3(s))
-            .map_err(|_| ParseError::scene(loc, "Scale by zero is singular"))?;
-        self.concat(t);
-        Ok(())
+        let t = Transform::scale(v3(s)).map_err(|_| {
+            ParseError::scene(
+                loc,
+                "Scale needs finite, non-zero factors (within f32's range)",
+            )
+        })?;
+        self.concat(t, loc)
     }
     /// `Rotate`.
     pub fn rotate(&mut self, angle: f64, axis: [f64; 3], loc: &Loc) -> Result<(), ParseError> {
@@ -110,8 +131,7 @@ impl StateStack {
                 "Rotate needs a finite angle and a non-zero axis",
             ));
         }
-        self.concat(Transform::rotate(angle as f32, a));
-        Ok(())
+        self.concat(Transform::rotate(angle as f32, a), loc)
     }
     /// `LookAt`.
     pub fn look_at(
@@ -123,8 +143,7 @@ impl StateStack {
     ) -> Result<(), ParseError> {
         let t = Transform::look_at(v3(e) as Point3, v3(l), v3(u))
             .map_err(|_| ParseError::scene(loc, "LookAt: degenerate eye, look and up"))?;
-        self.concat(t);
-        Ok(())
+        self.concat(t, loc)
     }
 
     /// `AttributeBegin` (`transform_only = false`) or `TransformBegin`.
