@@ -126,12 +126,15 @@ fn planned_and_merged_equals_the_one_machine_run() {
     // The plan cuts both references in bands and sample ranges, and the
     // last convergence points in bands.
     let doc: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(planned.join("plan.json")).unwrap())
-            .unwrap();
+        serde_json::from_str(&std::fs::read_to_string(planned.join("plan.json")).unwrap()).unwrap();
     let units = doc["units"].as_array().unwrap();
     let cut_of = |i: usize| {
         let u = &units[i];
-        (u["kind"].as_str().unwrap(), u["bands"].clone(), u["ranges"].clone())
+        (
+            u["kind"].as_str().unwrap(),
+            u["bands"].clone(),
+            u["ranges"].clone(),
+        )
     };
     assert_eq!(cut_of(0), ("reference", 2.into(), 8.into()));
     assert_eq!(cut_of(FIRST_RUN).0, "run");
@@ -153,7 +156,10 @@ fn planned_and_merged_equals_the_one_machine_run() {
     tiny.extend(&SETTINGS[..11]);
     tiny.extend(["--unit-samples", "1000"]);
     let err = error_of(&lowdisc(&tiny));
-    assert!(err.contains("--unit-samples must be at least 1024, got 1000"), "{err}");
+    assert!(
+        err.contains("--unit-samples must be at least 1024, got 1000"),
+        "{err}"
+    );
     assert!(status(&planned).contains(&format!(
         "0 done, 0 running, 0 stale, 0 failed, {UNITS} pending"
     )));

@@ -262,7 +262,10 @@ mod tests {
                     // of tiles; without ranges, a row of tiles is the least.
                     let row = |spp| samples([res[0], BAND_ROWS], spp);
                     let slack = if ranges_allowed { row(1) } else { row(spp) };
-                    assert!(largest <= budget + slack, "{res:?} {spp} {budget}: {largest}");
+                    assert!(
+                        largest <= budget + slack,
+                        "{res:?} {spp} {budget}: {largest}"
+                    );
                     if !ranges_allowed {
                         assert_eq!(c.ranges, 1);
                     }
@@ -270,10 +273,34 @@ mod tests {
             }
         }
         // Ranges only once the bands are single rows of tiles.
-        assert_eq!(cut([256, 144], 1024, 1 << 23, true), Cut { bands: 5, ranges: 1 });
-        assert_eq!(cut([128, 72], 8192, 1 << 23, true), Cut { bands: 5, ranges: 2 });
-        assert_eq!(cut([128, 72], 8192, 1 << 23, false), Cut { bands: 5, ranges: 1 });
-        assert_eq!(cut([1280, 720], 4096, 1280 * 720 * 16, true), Cut { bands: 45, ranges: 6 });
+        assert_eq!(
+            cut([256, 144], 1024, 1 << 23, true),
+            Cut {
+                bands: 5,
+                ranges: 1
+            }
+        );
+        assert_eq!(
+            cut([128, 72], 8192, 1 << 23, true),
+            Cut {
+                bands: 5,
+                ranges: 2
+            }
+        );
+        assert_eq!(
+            cut([128, 72], 8192, 1 << 23, false),
+            Cut {
+                bands: 5,
+                ranges: 1
+            }
+        );
+        assert_eq!(
+            cut([1280, 720], 4096, 1280 * 720 * 16, true),
+            Cut {
+                bands: 45,
+                ranges: 6
+            }
+        );
         assert_eq!(cut([32, 24], 64, 1 << 40, true), Cut::WHOLE);
     }
 }

@@ -26,9 +26,10 @@
 //!
 //! A reference unit renders band `band` of `bands` (consecutive whole rows
 //! of 16-pixel tiles, from the top, as equal in number as they can be) over
-//! sample range `range` of `ranges` (`range * spp / ranges` to `(range + 1)
-//! * spp / ranges`, rounded down); a convergence unit renders band `band` of
-//! `bands` of its point with every sample. How a render is cut
+//! sample range `range` of `ranges` (sample indices from `range * spp /
+//! ranges` up to `(range + 1) * spp / ranges`, each rounded down); a
+//! convergence unit renders band `band` of `bands` of its point with every
+//! sample. How a render is cut
 //! ([`crate::cut::cut`]): a render of at most the unit budget is one unit;
 //! a larger one is cut into bands of as many rows of tiles as fit the
 //! budget, and when one row of tiles alone holds more, into one band per

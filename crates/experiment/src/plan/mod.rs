@@ -96,7 +96,11 @@ impl Work {
                 sampler,
                 spp,
                 piece,
-            } => format!("convergence {} {spp} spp{}", sampler.as_str(), piece.describe()),
+            } => format!(
+                "convergence {} {spp} spp{}",
+                sampler.as_str(),
+                piece.describe()
+            ),
         }
     }
 
@@ -156,11 +160,7 @@ impl Unit {
         };
         let piece = self.work.piece();
         if piece.cut.ranges > 1 {
-            o.samples = Some(sample_range(
-                o.sampler.spp,
-                piece.range,
-                piece.cut.ranges,
-            ));
+            o.samples = Some(sample_range(o.sampler.spp, piece.range, piece.cut.ranges));
         }
         o
     }

@@ -147,20 +147,44 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
     let c = default_settings();
     assert_eq!(c.unit_budget(), 1 << 23);
     // 256x144 at 1024 spp: 2 rows of tiles (8.4 M samples) per band.
-    assert_eq!(reference_cut(&c, Target::Main), Cut { bands: 5, ranges: 1 });
+    assert_eq!(
+        reference_cut(&c, Target::Main),
+        Cut {
+            bands: 5,
+            ranges: 1
+        }
+    );
     // 128x72 at 8192 spp: one row of tiles is 16.8 M samples, so 2 ranges.
-    let conv = Cut { bands: 5, ranges: 2 };
+    let conv = Cut {
+        bands: 5,
+        ranges: 2,
+    };
     assert_eq!(reference_cut(&c, Target::Convergence), conv);
-    assert_eq!(convergence_cut(&c, 1024), Cut { bands: 2, ranges: 1 });
+    assert_eq!(
+        convergence_cut(&c, 1024),
+        Cut {
+            bands: 2,
+            ranges: 1
+        }
+    );
     assert_eq!(convergence_cut(&c, 512), Cut::WHOLE);
     let plan = Plan::new(c.clone(), 0, [false, false]);
     let w: Vec<String> = plan.units.iter().map(|u| u.work.describe()).collect();
     assert_eq!(w[4], "reference main band 5 of 5");
-    let conv_at = w.iter().position(|d| d.starts_with("reference conv")).unwrap();
+    let conv_at = w
+        .iter()
+        .position(|d| d.starts_with("reference conv"))
+        .unwrap();
     assert_eq!(w[conv_at], "reference convergence band 1 of 5 range 1 of 2");
-    assert_eq!(w[conv_at + 9], "reference convergence band 5 of 5 range 2 of 2");
+    assert_eq!(
+        w[conv_at + 9],
+        "reference convergence band 5 of 5 range 2 of 2"
+    );
     let last = &plan.units[conv_at + 9];
-    assert_eq!(last.options(&c).sample_range(), SampleRange::new(4096, 8192));
+    assert_eq!(
+        last.options(&c).sample_range(),
+        SampleRange::new(4096, 8192)
+    );
     assert_eq!(last.samples(&c), 128 * 8 * 4096);
     assert!(w.contains(&"convergence halton 1024 spp band 2 of 2".to_string()));
     // Cutting moves no sample: the plan renders what the whole renders do.
@@ -184,10 +208,25 @@ fn the_paper_plans_longest_unit_is_a_run() {
     c.conv_res = [640, 360];
     let run = 1280 * 720 * 16;
     assert_eq!(c.unit_budget(), run);
-    assert_eq!(reference_cut(&c, Target::Main), Cut { bands: 45, ranges: 6 });
-    let conv = Cut { bands: 23, ranges: 6 };
+    assert_eq!(
+        reference_cut(&c, Target::Main),
+        Cut {
+            bands: 45,
+            ranges: 6
+        }
+    );
+    let conv = Cut {
+        bands: 23,
+        ranges: 6,
+    };
     assert_eq!(reference_cut(&c, Target::Convergence), conv);
-    assert_eq!(convergence_cut(&c, 1024), Cut { bands: 23, ranges: 1 });
+    assert_eq!(
+        convergence_cut(&c, 1024),
+        Cut {
+            bands: 23,
+            ranges: 1
+        }
+    );
     let plan = Plan::new(c.clone(), 0, [false, false]);
     let longest = plan.units.iter().map(|u| u.samples(&c)).max().unwrap();
     assert_eq!(longest, run);
