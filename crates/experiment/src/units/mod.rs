@@ -48,7 +48,17 @@ pub fn render_unit(
     let keeps_sums = unit.work.keeps_sums();
     if keeps_sums {
         let bounds = Film::checked_bounds(&scene.film().params)?;
-        options.window = Some(unit.work.piece().window(bounds));
+        let window = unit.work.piece().window(bounds);
+        if window.area() == 0 {
+            // Bands are counted on the resolution; a crop window may hold
+            // fewer rows of tiles.
+            bail!(
+                "the scene's crop window leaves unit {} (`{}`) no pixels; plan with a larger --unit-samples",
+                unit.index,
+                unit.work.describe()
+            );
+        }
+        options.window = Some(window);
     }
     let out = render(scene, &options, stage)?;
     stage.finished_render(out.stats.samples);
