@@ -34,41 +34,12 @@ fi
 [ -x "$lowdisc" ] || fail "no lowdisc binary at $lowdisc"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/lowdisc-slurm-test.XXXXXX")
-chmod 0755 "$work" # munged's socket lies below it
-export LOWDISC_SLURM_DIR="$work/cluster"
-export SLURM_CONF="$LOWDISC_SLURM_DIR/slurm.conf"
-cleanup() {
-  local status=$?
-  "$here/local-cluster.sh" stop || status=1
-  if [ "$status" -eq 0 ]; then
-    rm -rf "$work"
-  else
-    echo "test_local: outputs and daemon logs kept in $work" >&2
-  fi
-  exit "$status"
-}
+# shellcheck source=jobs.sh
+. "$here/jobs.sh"
 
-step "packages"
-"$here/local-cluster.sh" install
-step "cluster"
-trap cleanup EXIT
-"$here/local-cluster.sh" start
+step "packages and cluster"
+local_cluster_up
 sinfo
-
-# Waits until every job in the comma-separated list has left the queue, then
-# fails unless each one COMPLETED (scontrol keeps finished jobs MinJobAge=300 s).
-wait_jobs() {
-  local jobs=$1 waited=0 id state
-  while [ -n "$(squeue -h -j "$jobs" -o %i 2>/dev/null)" ]; do
-    [ "$waited" -lt "$timeout_s" ] || fail "jobs $jobs still queued after ${timeout_s}s: $(squeue -j "$jobs")"
-    sleep 2
-    waited=$((waited + 2))
-  done
-  for id in ${jobs//,/ }; do
-    state=$(scontrol -o show job "$id" | tr ' ' '\n' | sed -n 's/^JobState=//p' | sort -u)
-    [ "$state" = COMPLETED ] || fail "job $id ended $state (logs: $work/*/out/slurm/)"
-  done
-}
 
 step "a trivial array: sbatch --array=0-3 --wrap hostname"
 mkdir -p "$work/hello"

@@ -125,6 +125,13 @@ pub struct ExperimentArgs {
     /// instead of in RGB, the default; the references are cached apart.
     #[arg(long)]
     spectral: bool,
+    /// The most camera samples of one unit of work: a reference or a
+    /// convergence point with more is rendered in pieces (bands of rows of
+    /// tiles; a reference also in sample ranges) whose exact sums are merged,
+    /// in a planned run and on one machine alike [default: the larger of a
+    /// run's samples and 8388608].
+    #[arg(long, value_name = "N")]
+    unit_samples: Option<u64>,
     /// Output folder (created if missing).
     #[arg(long, value_name = "DIR", default_value = "experiment")]
     out: PathBuf,
@@ -218,6 +225,7 @@ impl ExperimentArgs {
                 .unwrap_or(preset.map_or(DEFAULT_MAX_DEPTH, |p| p.max_depth())),
             threads: self.threads,
             spectral: self.spectral,
+            unit_samples: self.unit_samples,
             out: self.out,
             command: std::env::args().collect(),
         };

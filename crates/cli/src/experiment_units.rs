@@ -19,17 +19,20 @@ use crate::progress::{Reporter, duration, si};
 pub const PLAN_ABOUT: &str = "\
 Cut the experiment into independent units and write DIR/plan.json (DIR is\n\
 --out): every option of `experiment` is accepted and kept in the plan, so\n\
-`unit`, `merge` and `status` need only DIR. A unit is one render: the\n\
-reference (unless cached), one sampler x seed, one threshold x seed of the\n\
-sweep, the convergence reference (unless cached) or one sampler x spp of a\n\
-convergence series. There is no calibration render. Prints the unit count;\n\
+`unit`, `merge` and `status` need only DIR. A unit is one render: one\n\
+sampler x seed, one threshold x seed of the sweep, or a piece of the\n\
+reference, of the convergence reference (each unless cached) or of one\n\
+sampler x spp of a convergence series: a render of more camera samples than\n\
+--unit-samples is cut into bands of tile rows (a reference also into sample\n\
+ranges) whose exact sums the merge adds. There is no calibration render. Prints the unit count;\n\
 then run `lowdisc experiment unit DIR --index I` for I in 0..count-1 (in any\n\
 order, on any machine sharing DIR) and `lowdisc experiment merge DIR`.";
 
 /// The long help of `experiment unit`.
 pub const UNIT_ABOUT: &str = "\
-Run unit I of the plan in DIR: its image and record go to DIR/units/ (I with\n\
-four digits: I.pfm, I.json), written atomically. A unit already done is\n\
+Run unit I of the plan in DIR: its image (I.pfm, or I.exr with the exact\n\
+sums of a piece) and record (I.json) go to DIR/units/ (I with four digits),\n\
+written atomically. A unit already done is\n\
 skipped, so reruns after a failure are safe. While it runs, DIR/units/I.lock\n\
 holds its pid, host and start time; a failure is recorded in I.failed. The\n\
 images do not depend on --threads.";

@@ -12,23 +12,30 @@ use std::process::Output;
 use common::{lowdisc, temp_dir};
 
 /// The tiny experiment: 32x24, 4 spp, 2 runs of 2 samplers, a 64-spp
-/// reference, and convergence to 4 spp at 16x12 against its own reference.
-const SETTINGS: [&str; 11] = [
+/// reference, and convergence to 8 spp at 32x24 against its own 32-spp
+/// reference, in units of at most 4096 camera samples: the references are
+/// cut into bands and sample ranges, the 8-spp convergence points into bands.
+const SETTINGS: [&str; 13] = [
     "--quick",
     "--res",
     "32x24",
     "--samplers",
     "sobol,paper-repro",
     "--conv-max",
-    "4",
+    "8",
     "--conv-res",
-    "16x12",
+    "32x24",
     "--conv-ref-spp",
     "32",
+    "--unit-samples",
+    "4096",
 ];
-/// 2 bands of the reference + 2 x 2 runs + 7 x 2 sweep renders + 1 band of
-/// the convergence reference + 2 x 3 convergence points.
-const UNITS: usize = 27;
+/// 2 bands x 8 ranges of the reference + 2 x 2 runs + 7 x 2 sweep renders +
+/// 2 bands x 4 ranges of the convergence reference + 2 x (3 whole points +
+/// 2 bands of the 8-spp point).
+const UNITS: usize = 52;
+/// The first run's unit.
+const FIRST_RUN: usize = 16;
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()
@@ -116,8 +123,26 @@ fn planned_and_merged_equals_the_one_machine_run() {
     ok(&lowdisc(&args));
 
     let printed = plan(&planned, &[]);
+    // The plan cuts both references in bands and sample ranges, and the
+    // last convergence points in bands.
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(planned.join("plan.json")).unwrap()).unwrap();
+    let units = doc["units"].as_array().unwrap();
+    let cut_of = |i: usize| {
+        let u = &units[i];
+        (
+            u["kind"].as_str().unwrap(),
+            u["bands"].clone(),
+            u["ranges"].clone(),
+        )
+    };
+    assert_eq!(cut_of(0), ("reference", 2.into(), 8.into()));
+    assert_eq!(cut_of(FIRST_RUN).0, "run");
+    assert_eq!(cut_of(34), ("reference", 2.into(), 4.into()));
+    assert_eq!(cut_of(UNITS - 1).0, "convergence");
+    assert_eq!(cut_of(UNITS - 1).1, 2);
     assert!(
-        printed.contains(&format!("{UNITS} units (indices 0 to 26)")),
+        printed.contains(&format!("{UNITS} units (indices 0 to 51)")),
         "{printed}"
     );
     // The same plan again is kept; a different one is refused.
@@ -127,6 +152,14 @@ fn planned_and_merged_equals_the_one_machine_run() {
     other.extend(["--spp", "2"]);
     let err = error_of(&lowdisc(&other));
     assert!(err.contains("holds another plan"), "{err}");
+    let mut tiny = vec!["experiment", "plan", "--out", s(&planned)];
+    tiny.extend(&SETTINGS[..11]);
+    tiny.extend(["--unit-samples", "1000"]);
+    let err = error_of(&lowdisc(&tiny));
+    assert!(
+        err.contains("--unit-samples must be at least 1024, got 1000"),
+        "{err}"
+    );
     assert!(status(&planned).contains(&format!(
         "0 done, 0 running, 0 stale, 0 failed, {UNITS} pending"
     )));
@@ -134,7 +167,7 @@ fn planned_and_merged_equals_the_one_machine_run() {
     ok(&unit(&planned, 0));
     let err = error_of(&merge(&planned));
     assert!(
-        err.contains("26 of the plan's 27 units are not done (units 1, 2,"),
+        err.contains("51 of the plan's 52 units are not done (units 1, 2,"),
         "{err}"
     );
     // In reverse order: any order gives the same result.
@@ -185,43 +218,49 @@ fn units_are_idempotent_and_survive_failures() {
     // Index out of range.
     let err = error_of(&unit(&out, UNITS));
     assert!(
-        err.contains("unit index 27 is out of range: the plan has 27 units (0 to 26)"),
+        err.contains("unit index 52 is out of range: the plan has 52 units (0 to 51)"),
         "{err}"
     );
 
     // A second run of a done unit changes nothing.
-    let first = ok(&unit(&out, 3));
+    let (sobol_1, paper_0, paper_1) = (FIRST_RUN + 1, FIRST_RUN + 2, FIRST_RUN + 3);
+    let first = ok(&unit(&out, sobol_1));
     assert!(
-        first.contains("unit 3 (run sobol seed 1): done in"),
+        first.contains(&format!("unit {sobol_1} (run sobol seed 1): done in")),
         "{first}"
     );
-    let record = std::fs::read(unit_file(&out, 3, "json")).unwrap();
-    let again = ok(&unit(&out, 3));
+    let record = std::fs::read(unit_file(&out, sobol_1, "json")).unwrap();
+    let again = ok(&unit(&out, sobol_1));
     assert!(again.contains("already done"), "{again}");
-    assert_eq!(std::fs::read(unit_file(&out, 3, "json")).unwrap(), record);
+    assert_eq!(
+        std::fs::read(unit_file(&out, sobol_1, "json")).unwrap(),
+        record
+    );
 
     // The sky changes: the unit fails, says why, keeps no lock.
     let bright = lowdisc_image::RgbImage::filled(8, 4, [0.7; 3]).unwrap();
     lowdisc_image::write_pfm(&sky, &bright).unwrap();
-    let err = error_of(&unit(&out, 4));
+    let err = error_of(&unit(&out, paper_0));
     assert!(err.contains("changed since the plan was made"), "{err}");
-    assert!(unit_file(&out, 4, "failed").is_file());
-    assert!(!unit_file(&out, 4, "lock").exists());
-    assert!(!unit_file(&out, 4, "json").exists());
+    assert!(unit_file(&out, paper_0, "failed").is_file());
+    assert!(!unit_file(&out, paper_0, "lock").exists());
+    assert!(!unit_file(&out, paper_0, "json").exists());
     let st = status(&out);
     assert!(
-        st.contains("1 done, 0 running, 0 stale, 1 failed, 25 pending"),
+        st.contains("1 done, 0 running, 0 stale, 1 failed, 50 pending"),
         "{st}"
     );
     assert!(
-        st.contains("failed: unit 4 (run paper-repro seed 0): the scene"),
+        st.contains(&format!(
+            "failed: unit {paper_0} (run paper-repro seed 0): the scene"
+        )),
         "{st}"
     );
     assert!(st.contains("ETA: "), "{st}");
     // Restored, the rerun succeeds and clears the failure.
     lowdisc_image::write_pfm(&sky, &grey).unwrap();
-    ok(&unit(&out, 4));
-    assert!(!unit_file(&out, 4, "failed").exists());
+    ok(&unit(&out, paper_0));
+    assert!(!unit_file(&out, paper_0, "failed").exists());
 
     // A live lock (this test's process) is running and refused; a dead
     // process's lock is stale and taken over.
@@ -231,18 +270,18 @@ fn units_are_idempotent_and_survive_failures() {
             "{{\"pid\":{pid},\"host\":\"{}\",\"start_unix_s\":0}}",
             host.trim()
         );
-        std::fs::write(unit_file(&out, 5, "lock"), text).unwrap();
+        std::fs::write(unit_file(&out, paper_1, "lock"), text).unwrap();
     };
     lock(std::process::id());
     let st = status(&out);
     assert!(
         st.contains(&format!(
-            "running: unit 5 (run paper-repro seed 1): pid {}",
+            "running: unit {paper_1} (run paper-repro seed 1): pid {}",
             std::process::id()
         )),
         "{st}"
     );
-    let err = error_of(&unit(&out, 5));
+    let err = error_of(&unit(&out, paper_1));
     assert!(err.contains("is being run by pid"), "{err}");
     let mut child = std::process::Command::new("true").spawn().unwrap();
     let dead = child.id();
@@ -251,12 +290,12 @@ fn units_are_idempotent_and_survive_failures() {
     let st = status(&out);
     assert!(
         st.contains(&format!(
-            "stale: unit 5 (run paper-repro seed 1): pid {dead} on"
+            "stale: unit {paper_1} (run paper-repro seed 1): pid {dead} on"
         )),
         "{st}"
     );
-    ok(&unit(&out, 5));
-    assert!(!unit_file(&out, 5, "lock").exists());
+    ok(&unit(&out, paper_1));
+    assert!(!unit_file(&out, paper_1, "lock").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -270,8 +309,9 @@ fn the_merge_refuses_foreign_and_broken_units() {
         ok(&unit(&a, i));
     }
     ok(&unit(&b, 1));
-    // Unit 1 of another plan in place of this plan's.
-    for ext in ["json", "pfm"] {
+    // Unit 1 (a piece of the reference) of another plan in place of this
+    // plan's.
+    for ext in ["json", "exr"] {
         std::fs::copy(unit_file(&b, 1, ext), unit_file(&a, 1, ext)).unwrap();
     }
     let err = error_of(&merge(&a));
@@ -279,20 +319,22 @@ fn the_merge_refuses_foreign_and_broken_units() {
     assert!(err.contains("not unit 1 of this plan"), "{err}");
     // The unit command redoes it.
     ok(&unit(&a, 1));
-    // An image that does not match its record.
-    let image = unit_file(&a, 2, "pfm");
-    let mut bytes = std::fs::read(&image).unwrap();
-    let last = bytes.len() - 1;
-    bytes[last] ^= 1;
-    std::fs::write(&image, bytes).unwrap();
-    let err = error_of(&merge(&a));
-    assert!(err.contains("does not match its record"), "{err}");
-    ok(&unit(&a, 2));
+    // Files that do not match their records: a piece's sums, a run's image.
+    for (i, ext) in [(2, "exr"), (FIRST_RUN, "pfm")] {
+        let file = unit_file(&a, i, ext);
+        let mut bytes = std::fs::read(&file).unwrap();
+        let last = bytes.len() - 1;
+        bytes[last] ^= 1;
+        std::fs::write(&file, bytes).unwrap();
+        let err = error_of(&merge(&a));
+        assert!(err.contains("does not match its record"), "{err}");
+        ok(&unit(&a, i));
+    }
     // A missing unit.
     std::fs::remove_file(unit_file(&a, 7, "json")).unwrap();
     let err = error_of(&merge(&a));
     assert!(
-        err.contains("1 of the plan's 27 units are not done (units 7)"),
+        err.contains("1 of the plan's 52 units are not done (units 7)"),
         "{err}"
     );
     ok(&unit(&a, 7));

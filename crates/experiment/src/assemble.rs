@@ -1,32 +1,66 @@
-//! From the units' renders to the experiment's [`Results`] and report
-//! images: the one code path of the one-machine run (which renders each
-//! unit in-process as it is needed) and of `lowdisc experiment merge`
-//! (which reads each unit's file). Both hand the renders to [`assemble`]
-//! through a [`UnitSource`], in the order of the plan.
+//! From the units' renders to the experiment's [`Results`], report images
+//! and report folder: the one code path of the one-machine run (which
+//! renders each unit in-process as it is needed) and of `lowdisc experiment
+//! merge` (which reads each unit's file). Both hand the renders to
+//! [`assemble`] through a [`UnitSource`], in the order of the plan, and end
+//! in [`report`]; the pieces of a cut render are joined by [`join_cut`].
 
 use anyhow::{Context, Result, bail};
 use lowdisc::catalog::SamplerName;
 use lowdisc_image::RgbImage;
+use lowdisc_render::film::FilmParams;
+use lowdisc_render::scene::Scene;
+use lowdisc_split::RenderPart;
 
 use crate::comparison::fill_statistics;
+use crate::cut::{Cut, Joiner, Piece};
 use crate::metrics::{ErrorStats, MetricSummary, measure};
-use crate::plan::{Plan, Target, Unit, Work, shares_reference};
+use crate::plan::{Plan, Target, Unit, Work, convergence_cut, shares_reference};
 use crate::progress::{Progress, Stage, samples};
 use crate::quality::Evaluator;
 use crate::reference::reference;
 use crate::results::{
     ConvPoint, Images, Results, RunResult, SamplerResult, SweepPoint, fill_ratios,
 };
+use crate::run::Outcome;
 use crate::stats::{MeanSd, log_log_slope};
 use crate::sweep::{THRESHOLDS, pixel_discrepancy};
+
+/// What a unit's render leaves: an image, or (a piece of a cut render,
+/// [`Work::keeps_sums`]) its pixels' exact sums.
+#[derive(Debug, Clone)]
+pub enum Rendered {
+    /// The image of a whole render.
+    Image(RgbImage),
+    /// The sums of a piece, to be merged with the other pieces.
+    Sums(RenderPart),
+}
 
 /// The render of one unit.
 #[derive(Debug, Clone)]
 pub struct UnitOutput {
-    /// The image.
-    pub image: RgbImage,
+    /// What it left.
+    pub rendered: Rendered,
     /// The render's time in seconds (what `results.json` reports).
     pub render_time_s: f64,
+}
+
+impl UnitOutput {
+    /// The image of a whole render.
+    fn into_image(self, unit: &Unit) -> Result<RgbImage> {
+        match self.rendered {
+            Rendered::Image(image) => Ok(image),
+            Rendered::Sums(_) => bail!("unit {} left sums, not an image", unit.index),
+        }
+    }
+
+    /// The sums of a piece.
+    fn into_sums(self, unit: &Unit) -> Result<RenderPart> {
+        match self.rendered {
+            Rendered::Sums(part) => Ok(part),
+            Rendered::Image(_) => bail!("unit {} left an image, not sums", unit.index),
+        }
+    }
 }
 
 /// Where [`assemble`] gets each unit's render from. `output` reports the
@@ -34,6 +68,52 @@ pub struct UnitOutput {
 pub trait UnitSource {
     /// The render of `unit`.
     fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput>;
+}
+
+/// What renders are measured with: the scene's metrics at the plan's
+/// resolution and its film (whose settings turn merged sums into images).
+pub struct Measures {
+    /// The masked, blurred and FLIP metrics.
+    pub evaluator: Evaluator,
+    /// The scene's film, at the plan's resolution.
+    pub film: FilmParams,
+}
+
+impl Measures {
+    /// The measures of the experiment `plan` on `scene` (loaded at the
+    /// plan's resolution).
+    pub fn new(plan: &Plan, scene: &Scene) -> Result<Measures> {
+        let c = &plan.config;
+        Ok(Measures {
+            evaluator: Evaluator::new(scene, c.emitter_border, c.blur_sigma)?,
+            film: scene.film().params.clone(),
+        })
+    }
+
+    /// The film at `resolution`.
+    pub(crate) fn film_at(&self, resolution: [u32; 2]) -> FilmParams {
+        FilmParams {
+            resolution,
+            ..self.film.clone()
+        }
+    }
+}
+
+/// Assembles the units of `plan` from `source` ([`assemble`]) and writes
+/// the report folder; `wall_time_s` gives the run's wall time when the
+/// report is written. The one ending of both the one-machine and the
+/// planned run.
+pub fn report(
+    plan: &Plan,
+    measures: &Measures,
+    source: &mut dyn UnitSource,
+    observer: &dyn Progress,
+    wall_time_s: &dyn Fn() -> f64,
+) -> Result<Outcome> {
+    let (results, images) = assemble(plan, measures, source, observer)?;
+    let wall = wall_time_s();
+    let files = crate::report::write_all(&plan.config, &results, &images, wall)?;
+    Ok(Outcome::of(&plan.config, files, &results, wall, observer))
 }
 
 /// The plan's units in order; each step of the assembly takes the next one
@@ -58,12 +138,36 @@ impl<'a> Cursor<'a> {
     }
 }
 
+/// The image of a render cut into `cut`, whose pieces are the next units
+/// of `cursor` (the unit of each piece is `work(piece)`), as a film of
+/// `film` (spectral or not), and the sum of the pieces' render times.
+pub(crate) fn join_cut(
+    cursor: &mut Cursor,
+    source: &mut dyn UnitSource,
+    stage: &Stage,
+    cut: Cut,
+    work: &dyn Fn(Piece) -> Work,
+    film: &FilmParams,
+    spectral: bool,
+) -> Result<(RgbImage, f64)> {
+    let mut joiner = Joiner::new();
+    let mut time_s = 0.0;
+    for piece in cut.pieces() {
+        let unit = cursor.next(work(piece))?;
+        let out = source.output(unit, stage)?;
+        time_s += out.render_time_s;
+        let name = format!("unit {} ({})", unit.index, unit.work.describe());
+        joiner.push(piece, name, out.into_sums(unit)?)?;
+    }
+    Ok((joiner.finish(film, spectral)?, time_s))
+}
+
 /// The numbers and images of the experiment of `plan`, from the renders
-/// of `source`, measured with `evaluator` (the scene's at the plan's
+/// of `source`, measured with `measures` (the scene's, at the plan's
 /// resolution).
 pub fn assemble(
     plan: &Plan,
-    evaluator: &Evaluator,
+    measures: &Measures,
     source: &mut dyn UnitSource,
     observer: &dyn Progress,
 ) -> Result<(Results, Images)> {
@@ -71,7 +175,8 @@ pub fn assemble(
     let mut cursor = Cursor {
         units: plan.units.iter(),
     };
-    let (main, ref_info) = reference(plan, Target::Main, &mut cursor, source, observer)?;
+    let evaluator = &measures.evaluator;
+    let (main, ref_info) = reference(plan, measures, Target::Main, &mut cursor, source, observer)?;
     let mut samplers = Vec::new();
     let mut renders = Vec::new();
     let per_sampler = u64::from(config.runs) * samples(config.resolution, config.spp);
@@ -94,17 +199,19 @@ pub fn assemble(
                 seed,
             })?;
             let out = source.output(unit, &stage)?;
-            let m = measure(&out.image, &main)?;
+            let time_s = out.render_time_s;
+            let image = out.into_image(unit)?;
+            let m = measure(&image, &main)?;
             runs.push(RunResult {
                 seed,
-                time_s: out.render_time_s,
+                time_s,
                 linear: m.linear,
                 srgb8: m.srgb8,
-                quality: evaluator.measure(&out.image, &main)?,
+                quality: evaluator.measure(&image, &main)?,
             });
             match &first {
-                None => first = Some(out.image),
-                Some(f) => deterministic &= f.pixels() == out.image.pixels(),
+                None => first = Some(image),
+                Some(f) => deterministic &= f.pixels() == image.pixels(),
             }
         }
         stage.end();
@@ -118,7 +225,14 @@ pub fn assemble(
     let (conv_reference, conv_ref_info) = if shares_reference(config) {
         (&main, ref_info.clone())
     } else {
-        let (image, info) = reference(plan, Target::Convergence, &mut cursor, source, observer)?;
+        let (image, info) = reference(
+            plan,
+            measures,
+            Target::Convergence,
+            &mut cursor,
+            source,
+            observer,
+        )?;
         conv_own = image;
         (&conv_own, info)
     };
@@ -132,12 +246,26 @@ pub fn assemble(
         let stage = Stage::begin(observer, &title, per_series);
         let mut series = Vec::new();
         let mut spp = 1;
+        let film = measures.film_at(config.conv_res);
         while spp <= config.conv_max {
-            let unit = cursor.next(Work::Convergence { sampler: name, spp })?;
-            let out = source.output(unit, &stage)?;
+            let work = |piece| Work::Convergence {
+                sampler: name,
+                spp,
+                piece,
+            };
+            let cut = convergence_cut(config, spp);
+            let (image, _) = join_cut(
+                &mut cursor,
+                source,
+                &stage,
+                cut,
+                &work,
+                &film,
+                config.spectral,
+            )?;
             series.push(ConvPoint {
                 spp,
-                relmse: measure(&out.image, conv_reference)?.linear.relmse,
+                relmse: measure(&image, conv_reference)?.linear.relmse,
             });
             spp *= 2;
         }
@@ -220,8 +348,8 @@ fn sweep(
         let mut srgb8 = Vec::new();
         for seed in 0..u64::from(config.runs) {
             let unit = cursor.next(Work::Sweep { threshold, seed })?;
-            let rendered = source.output(unit, &stage)?;
-            let m = measure(&rendered.image, reference)?;
+            let image = source.output(unit, &stage)?.into_image(unit)?;
+            let m = measure(&image, reference)?;
             linear.push(m.linear.relmse);
             srgb8.push(m.srgb8.relmse);
         }

@@ -15,6 +15,14 @@ pub const REF_SAMPLER: SamplerName = SamplerName::SobolOwen;
 pub const DEFAULT_SAMPLERS: &str = "independent,stratified,halton,sobol,paper,paper-repro,sobol-xor,padded-sobol,sobol-fast-owen,zsobol";
 /// The largest image side accepted.
 pub const MAX_SIDE: u32 = 16_384;
+/// The least default unit budget of [`ExperimentConfig::unit_budget`]: 2^23
+/// camera samples (about 10 s at the 1.26 s per million samples the README
+/// measured for the default experiment on its idle 2-core machine), so that
+/// small experiments are not cut into units whose start costs as much as
+/// their render.
+pub const DEFAULT_UNIT_SAMPLES: u64 = 1 << 23;
+/// The smallest `--unit-samples` accepted.
+pub const MIN_UNIT_SAMPLES: u64 = 1 << 10;
 
 /// A complete experiment: what to render, how often and where to write.
 #[derive(Debug, Clone)]
@@ -56,6 +64,9 @@ pub struct ExperimentConfig {
     /// Render spectrally (wavelength sampling in the loop) instead of in
     /// RGB, the default.
     pub spectral: bool,
+    /// The most camera samples of a unit that is cut (`--unit-samples`;
+    /// `None`: see [`ExperimentConfig::unit_budget`]).
+    pub unit_samples: Option<u64>,
     /// Output folder.
     pub out: PathBuf,
     /// The command line that asked for this experiment, kept in `results.json`.
@@ -63,6 +74,15 @@ pub struct ExperimentConfig {
 }
 
 impl ExperimentConfig {
+    /// The camera samples a unit may hold before its render is cut
+    /// ([`crate::cut::cut`]): `--unit-samples`, else the larger of a run's
+    /// samples (a run is never cut) and [`DEFAULT_UNIT_SAMPLES`].
+    pub fn unit_budget(&self) -> u64 {
+        self.unit_samples.unwrap_or_else(|| {
+            crate::progress::samples(self.resolution, self.spp).max(DEFAULT_UNIT_SAMPLES)
+        })
+    }
+
     /// Checks that every setting is in range and that the scene and
     /// environment map files exist; the messages name the command-line
     /// options.
@@ -120,6 +140,11 @@ impl ExperimentConfig {
                     "--threads must be between 1 and {}, got {t}",
                     lowdisc_render::render::MAX_THREADS
                 );
+            }
+        }
+        if let Some(n) = self.unit_samples {
+            if n < MIN_UNIT_SAMPLES {
+                bail!("--unit-samples must be at least {MIN_UNIT_SAMPLES}, got {n}");
             }
         }
         if self.scene.is_some() && self.preset.is_some() {

@@ -11,12 +11,15 @@
 //! - [`scene`]: the built-in scene and its procedural sky;
 //! - [`plan`]: the experiment as independent units (one render each) and
 //!   `plan.json`;
+//! - [`cut`]: a large render cut into pieces (bands x sample ranges) and
+//!   joined again, exactly;
 //! - [`estimate`]: the estimate of a one-machine run's time;
 //! - [`reference`](mod@reference): the converged reference renders, cached on disk;
 //! - [`run`](mod@run): the one-machine run: every unit rendered in-process;
 //! - [`units`]: rendering one unit, its files, its lock;
 //! - [`assemble`](mod@assemble): the units' renders measured and collected
-//!   into results (one path for the one-machine and the planned run);
+//!   into results and the report folder (one path for the one-machine and
+//!   the planned run);
 //! - [`planned`]: the planned run in a folder: plan, and merge;
 //! - [`status`]: the progress of a planned run;
 //! - [`sweep`]: the threshold sweep of the paper's method;
@@ -43,8 +46,9 @@
 //! - `results.json`, schema (every number of the report):
 //!   `{ schema: 1, command: [args], version, git_hash?, machine: {cpu, cores},
 //!   settings: {scene, width, height, spp, runs, ref_spp, ref_sampler, ref_seed,
-//!   max_depth, spectral, threshold, conv_max, conv_res: [w, h], conv_ref_spp, samplers:
-//!   [names]}, reference: {file, cached, time_s}, convergence_reference:
+//!   max_depth, spectral, threshold, conv_max, conv_res: [w, h], conv_ref_spp,
+//!   unit_samples (the unit budget), ref_ranges: [main, convergence] (the
+//!   sample ranges each reference is cut into), samplers: [names]}, reference: {file, cached, time_s}, convergence_reference:
 //!   {file, cached, time_s}, samplers: [{ name, description, deterministic,
 //!   time_s, mse, relmse, rmse, mae (linear, each {mean, sd}),
 //!   srgb8: {mse, relmse, rmse, mae} (each {mean, sd}),
@@ -64,7 +68,9 @@
 //! unbiased randomised sampler, seed [`REF_SEED`]) is cached as PFM in
 //! `<parent of out>/lowdisc-ref-cache/ref-<hash>.pfm`, keyed by an FNV-1a
 //! hash of the scene's content (the built-in scene's id, or the scene file's
-//! bytes), the environment map's bytes and every render setting; reruns
+//! bytes), the environment map's bytes, every render setting and the number
+//! of sample ranges it is cut into ([`cut`]: each range's `f64` sums are
+//! added in range order, the same in a planned and a one-machine run); reruns
 //! reuse it and say so through [`Progress::note`]. The convergence series
 //! (1 to `conv_max` spp, seed 0) is rendered at `conv_res` against its own
 //! reference of `conv_ref_spp` samples, cached the same way, so that the
@@ -82,6 +88,7 @@
 pub mod assemble;
 pub mod comparison;
 pub mod config;
+pub mod cut;
 pub mod estimate;
 pub mod figure;
 pub mod metrics;

@@ -10,17 +10,15 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 
-use crate::assemble::assemble;
+use crate::assemble::{Measures, report};
 use crate::config::ExperimentConfig;
 use crate::plan::Plan;
 use crate::plan::file::PlanFile;
 use crate::progress::Progress;
-use crate::quality::Evaluator;
 use crate::reference::cached_references;
-use crate::report;
 use crate::run::{Outcome, load};
 use crate::units::store::Store;
-use crate::units::{FromFiles, check_scene};
+use crate::units::{FromFiles, planned_scene};
 
 /// Writes the plan of `config` to `config.out/plan.json` and creates the
 /// units folder. Relative paths of the plan start at the current folder.
@@ -85,23 +83,12 @@ pub fn merge(dir: &Path, observer: &dyn Progress) -> Result<Outcome> {
             list(&missing, 12)
         );
     }
-    let config = plan.loading_config();
-    config.validate()?;
-    let (scene, hash) = load(&config, observer)?;
-    check_scene(&plan, hash)?;
-    let evaluator = Evaluator::new(&scene, config.emitter_border, config.blur_sigma)?;
+    let (_, scene) = planned_scene(&plan, None, observer)?;
+    let measures = Measures::new(&plan.plan, &scene)?;
     let mut source = FromFiles {
         plan: &plan,
         store: &store,
     };
-    let (results, images) = assemble(&plan.plan, &evaluator, &mut source, observer)?;
-    let wall = unit_time + start.elapsed().as_secs_f64();
-    let files = report::write_all(&plan.plan.config, &results, &images, wall)?;
-    Ok(Outcome::of(
-        &plan.plan.config,
-        files,
-        &results,
-        wall,
-        observer,
-    ))
+    let wall = || unit_time + start.elapsed().as_secs_f64();
+    report(&plan.plan, &measures, &mut source, observer, &wall)
 }

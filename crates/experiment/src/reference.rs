@@ -1,16 +1,17 @@
 //! The converged reference renders (the main one and the convergence
 //! series' own), cached on disk under a key of the scene's content and
-//! every setting that changes the image; a reference that is not cached
-//! is a unit of the plan ([`crate::plan`]).
+//! every setting that changes the image, the number of sample ranges it is
+//! cut into included ([`crate::cut`]); a reference that is not cached is
+//! rendered as units of the plan ([`crate::plan`]) and joined.
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use lowdisc_image::RgbImage;
 
-use crate::assemble::{Cursor, UnitSource};
+use crate::assemble::{Cursor, Measures, UnitSource, join_cut};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
-use crate::plan::{Plan, Target, Work, reference_parts, reference_settings};
+use crate::plan::{Plan, Target, Work, reference_cut, reference_settings};
 use crate::progress::{Progress, Stage, samples};
 use crate::results::ReferenceInfo;
 use crate::stats::{FNV_OFFSET, fnv1a};
@@ -19,17 +20,17 @@ use crate::stats::{FNV_OFFSET, fnv1a};
 /// readable) for the scene whose content hashes to `scene_hash`.
 pub fn cached_references(config: &ExperimentConfig, scene_hash: u64) -> [bool; 2] {
     [Target::Main, Target::Convergence].map(|target| {
-        let (resolution, spp) = reference_settings(config, target);
-        let file = cache_file(config, resolution, scene_hash, spp);
+        let file = cache_file(config, target, scene_hash);
         file.is_file() && lowdisc_image::read_image(&file).is_ok()
     })
 }
 
 /// Reference `target` of the plan: read from the cache when the plan says
-/// it is cached, else stacked from its bands (the next units of `cursor`),
+/// it is cached, else joined from its pieces (the next units of `cursor`),
 /// whose render times add up, and written to the cache.
 pub(crate) fn reference(
     plan: &Plan,
+    measures: &Measures,
     target: Target,
     cursor: &mut Cursor,
     source: &mut dyn UnitSource,
@@ -37,7 +38,7 @@ pub(crate) fn reference(
 ) -> Result<(RgbImage, ReferenceInfo)> {
     let config = &plan.config;
     let (resolution, spp) = reference_settings(config, target);
-    let file = cache_file(config, resolution, plan.scene_hash, spp);
+    let file = cache_file(config, target, plan.scene_hash);
     let dir = cache_dir(&config.out);
     let cached = match target {
         Target::Main => plan.cached[0],
@@ -66,29 +67,16 @@ pub(crate) fn reference(
         REF_SAMPLER.as_str()
     );
     let stage = Stage::begin(observer, &title, samples(resolution, spp));
-    // The bands, from the top, stacked.
-    let parts = reference_parts(config, target);
-    let (mut width, mut pixels, mut time_s) = (0, Vec::new(), 0.0);
-    for part in 0..parts {
-        let unit = cursor.next(Work::Reference {
-            target,
-            part,
-            parts,
-        })?;
-        let out = source.output(unit, &stage)?;
-        if part > 0 && out.image.width() != width {
-            bail!(
-                "the bands of the reference differ in width ({width} and {} pixels)",
-                out.image.width()
-            );
-        }
-        width = out.image.width();
-        pixels.extend_from_slice(out.image.pixels());
-        time_s += out.render_time_s;
-    }
+    let (image, time_s) = join_cut(
+        cursor,
+        source,
+        &stage,
+        reference_cut(config, target),
+        &|piece| Work::Reference { target, piece },
+        &measures.film_at(resolution),
+        config.spectral,
+    )?;
     stage.end();
-    let height = pixels.len() / width.max(1);
-    let image = RgbImage::from_pixels(width, height, pixels)?;
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create `{}`", dir.display()))?;
     lowdisc_image::write_pfm(&file, &image)?;
     observer.note(&format!("cached reference in {}", file.display()));
@@ -100,22 +88,21 @@ pub(crate) fn reference(
     Ok((image, info))
 }
 
-/// The cache file of the reference at `resolution` with `spp` samples of
-/// the scene whose content hashes to `scene_hash`.
-pub fn cache_file(
-    config: &ExperimentConfig,
-    resolution: [u32; 2],
-    scene_hash: u64,
-    spp: u32,
-) -> PathBuf {
+/// The cache file of reference `target` of the scene whose content hashes
+/// to `scene_hash`; the key names the number of sample ranges the
+/// reference is cut into, whose sums round differently (keys before the
+/// ranges named none, so no older file is reused).
+pub fn cache_file(config: &ExperimentConfig, target: Target, scene_hash: u64) -> PathBuf {
+    let (resolution, spp) = reference_settings(config, target);
     let mut key = format!(
-        "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{}",
+        "{scene_hash:016x} {:?} ref_spp={} sampler={} seed={} depth={} v{} ranges={}",
         resolution,
         spp,
         REF_SAMPLER.as_str(),
         REF_SEED,
         config.max_depth,
-        env!("CARGO_PKG_VERSION")
+        env!("CARGO_PKG_VERSION"),
+        reference_cut(config, target).ranges
     );
     if config.spectral {
         key.push_str(" spectral");

@@ -15,17 +15,16 @@ use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::RenderOptions;
 use lowdisc_render::scene::Scene;
 
-use crate::assemble::assemble;
+use crate::assemble::{Measures, report};
 use crate::config::ExperimentConfig;
 use crate::estimate::calibrate;
 use crate::plan::{Plan, shares_reference};
 use crate::progress::Progress;
-use crate::quality::Evaluator;
 use crate::reference::cached_references;
 use crate::results::Results;
+use crate::scene;
 use crate::stats::{FNV_OFFSET, fnv1a};
 use crate::units::InProcess;
-use crate::{report, scene};
 
 /// The scene and the hash of its content: the built-in scene's id or the
 /// scene file's bytes (not the files it includes), and the environment
@@ -100,7 +99,7 @@ pub fn options(
             ..PathIntegrator::default()
         },
         threads: config.threads,
-        tile_size: 16,
+        tile_size: crate::cut::BAND_ROWS,
         spectral: config.spectral,
         ..RenderOptions::default()
     }
@@ -151,18 +150,12 @@ pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<Outcome
         cached_references(config, scene_hash),
     );
     observer.estimate(&calibrate(config, &scene, plan.samples())?);
-    let evaluator = Evaluator::new(&scene, config.emitter_border, config.blur_sigma)?;
+    let measures = Measures::new(&plan, &scene)?;
     let mut source = InProcess {
         config,
         scene: &mut scene,
+        scene_hash,
     };
-    let (results, images) = assemble(&plan, &evaluator, &mut source, observer)?;
-    let files = report::write_all(config, &results, &images, start.elapsed().as_secs_f64())?;
-    Ok(Outcome::of(
-        config,
-        files,
-        &results,
-        start.elapsed().as_secs_f64(),
-        observer,
-    ))
+    let wall = || start.elapsed().as_secs_f64();
+    report(&plan, &measures, &mut source, observer, &wall)
 }

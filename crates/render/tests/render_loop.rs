@@ -5,6 +5,7 @@ use lowdisc::catalog::SamplerName;
 use lowdisc_render::bsdf::Material;
 use lowdisc_render::camera::PerspectiveParams;
 use lowdisc_render::cornell::cornell_box;
+use lowdisc_render::film::PixelBounds;
 use lowdisc_render::filter::Filter;
 use lowdisc_render::geometry::Sphere;
 use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
@@ -257,5 +258,35 @@ fn progress_reports_every_tile_and_bad_options_are_errors() {
     ] {
         assert!(bad.validate().is_err(), "{bad:?}");
         assert!(render(&scene, &bad, &NoProgress).is_err());
+    }
+}
+
+#[test]
+fn the_image_of_a_renders_sums_is_its_image() {
+    use lowdisc_render::render::image_of_sums;
+    let scene = cornell_box([24, 16]).unwrap();
+    let params = scene.film().params.clone();
+    for spectral in [false, true] {
+        let o = RenderOptions {
+            spectral,
+            window: Some(PixelBounds::new([3, 2], [19, 13])),
+            ..opts(SamplerName::ZSobol, 4, 2)
+        };
+        let out = render(&scene, &o, &NoProgress).unwrap();
+        let window = out.film.pixel_bounds();
+        let sums = out.film.sums();
+        let image = image_of_sums(&params, window, spectral, sums).unwrap();
+        assert_eq!(bits(image.pixels()), bits(out.image.pixels()), "{spectral}");
+        // The other mode's output gives another image.
+        let other = image_of_sums(&params, window, !spectral, sums).unwrap();
+        assert_ne!(bits(other.pixels()), bits(out.image.pixels()), "{spectral}");
+        // The film's white balance reaches the spectral output only.
+        let mut warm = params.clone();
+        warm.white_balance = 4000.0;
+        let balanced = image_of_sums(&warm, window, spectral, sums).unwrap();
+        assert_eq!(bits(balanced.pixels()) == bits(image.pixels()), !spectral);
+        // Sums of another window's size are refused.
+        let small = PixelBounds::new([3, 2], [19, 12]);
+        assert!(image_of_sums(&params, small, spectral, sums).is_err());
     }
 }

@@ -3,7 +3,7 @@
 //! the others to be merged.
 
 use lowdisc_image::{ImageError, RgbImage};
-use lowdisc_render::film::{Film, PixelBounds, PixelSum};
+use lowdisc_render::film::{Film, FilmParams, PixelBounds, PixelSum};
 use lowdisc_render::render::{RenderError, RenderOptions, RenderOutput, SampleRange};
 use lowdisc_render::scene::Scene;
 use sha2::{Digest, Sha256};
@@ -49,11 +49,23 @@ impl RenderPart {
         opts: &RenderOptions,
         output: &RenderOutput,
     ) -> Result<RenderPart, RenderError> {
-        let params = &scene.film().params;
+        RenderPart::of_render(scene_hash(scene), &scene.film().params, opts, output)
+    }
+
+    /// The part that `output` holds, a render with `opts` of a scene named
+    /// `scene` whose film has `params`: for a caller that names the scene
+    /// itself (an experiment's plan, by its content hash) instead of
+    /// hashing the parsed scene ([`scene_hash`]) for every part.
+    pub fn of_render(
+        scene: String,
+        params: &FilmParams,
+        opts: &RenderOptions,
+        output: &RenderOutput,
+    ) -> Result<RenderPart, RenderError> {
         let film_bounds = Film::checked_bounds(params).map_err(RenderError::Film)?;
         Ok(RenderPart {
             info: PartInfo {
-                scene: scene_hash(scene),
+                scene,
                 settings: settings(opts),
                 resolution: params.resolution,
                 film_bounds,

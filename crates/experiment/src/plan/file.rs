@@ -1,10 +1,10 @@
 //! `DIR/plan.json`: a [`Plan`] on disk, complete enough that the units and
 //! the merge need no other option.
 //!
-//! Schema (format `lowdisc-experiment-plan`, version 1):
+//! Schema (format `lowdisc-experiment-plan`, version 2):
 //!
 //! ```text
-//! { format: "lowdisc-experiment-plan", version: 1,
+//! { format: "lowdisc-experiment-plan", version: 2,
 //!   id: "16 hex digits: FNV-1a of every field below",
 //!   lowdisc_version: "0.1.0"   (units and merge refuse another version),
 //!   cwd: "/abs/folder"         (relative scene and envmap paths start here),
@@ -12,15 +12,30 @@
 //!   settings: { scene: path|null, preset: name|null, emitter_border,
 //!     blur_sigma, samplers: [names], spp, runs, resolution: [w, h],
 //!     ref_spp, conv_max, conv_res: [w, h], conv_ref_spp, envmap: path|null,
-//!     threshold, max_depth, threads: n|null, command: [args] },
+//!     threshold, max_depth, threads: n|null, spectral,
+//!     unit_samples: n|null (--unit-samples; null: the default budget),
+//!     command: [args] },
 //!   cached: [main, convergence]  (references cached when planned: no units),
 //!   unit_count: N, samples: camera samples of all units,
 //!   units: [ { index, kind: "reference", target: "main"|"convergence",
-//!              part, parts }   (band `part` of `parts` of rows of tiles)
+//!              band, bands, range, ranges }
 //!          | { index, kind: "run", sampler, seed }
 //!          | { index, kind: "sweep", threshold, seed }
-//!          | { index, kind: "convergence", sampler, spp } ] }
+//!          | { index, kind: "convergence", sampler, spp, band, bands } ] }
 //! ```
+//!
+//! A reference unit renders band `band` of `bands` (consecutive whole rows
+//! of 16-pixel tiles, from the top, as equal in number as they can be) over
+//! sample range `range` of `ranges` (sample indices from `range * spp /
+//! ranges` up to `(range + 1) * spp / ranges`, each rounded down); a
+//! convergence unit renders band `band` of `bands` of its point with every
+//! sample. How a render is cut
+//! ([`crate::cut::cut`]): a render of at most the unit budget is one unit;
+//! a larger one is cut into bands of as many rows of tiles as fit the
+//! budget, and when one row of tiles alone holds more, into one band per
+//! row of tiles, each (references only) in the fewest equal sample ranges
+//! that fit. The budget is `unit_samples`, else the larger of a run's camera
+//! samples (runs and sweep renders are never cut) and 2^23.
 //!
 //! Each unit also lists its `resolution` and `samples` (a scheduler may
 //! balance by them; they are recomputed from the settings, not trusted).
@@ -35,12 +50,13 @@ use serde::{Deserialize, Serialize};
 
 use super::{Plan, Target, Unit, Work, units};
 use crate::config::ExperimentConfig;
+use crate::cut::{Cut, Piece};
 use crate::stats::{FNV_OFFSET, fnv1a};
 
 /// The `format` field of `plan.json`.
 pub const FORMAT: &str = "lowdisc-experiment-plan";
 /// The schema version this build writes and reads.
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
 
 /// A plan with where it was made, as read from or written to `plan.json`.
 #[derive(Debug, Clone)]
@@ -74,6 +90,7 @@ struct Settings {
     /// Spectral rendering (`--spectral`); absent in plans that predate it.
     #[serde(default)]
     spectral: bool,
+    unit_samples: Option<u64>,
     command: Vec<String>,
 }
 
@@ -82,8 +99,10 @@ struct Settings {
 enum UnitDoc {
     Reference {
         target: String,
-        part: u32,
-        parts: u32,
+        band: u32,
+        bands: u32,
+        range: u32,
+        ranges: u32,
     },
     Run {
         sampler: String,
@@ -96,6 +115,8 @@ enum UnitDoc {
     Convergence {
         sampler: String,
         spp: u32,
+        band: u32,
+        bands: u32,
     },
 }
 
@@ -148,27 +169,31 @@ fn sampler(name: &str) -> Result<SamplerName> {
 
 fn unit_doc(work: &Work) -> UnitDoc {
     match *work {
-        Work::Reference {
-            target,
-            part,
-            parts,
-        } => UnitDoc::Reference {
+        Work::Reference { target, piece } => UnitDoc::Reference {
             target: match target {
                 Target::Main => "main",
                 Target::Convergence => "convergence",
             }
             .into(),
-            part,
-            parts,
+            band: piece.band,
+            bands: piece.cut.bands,
+            range: piece.range,
+            ranges: piece.cut.ranges,
         },
         Work::Run { sampler, seed } => UnitDoc::Run {
             sampler: sampler.as_str().into(),
             seed,
         },
         Work::Sweep { threshold, seed } => UnitDoc::Sweep { threshold, seed },
-        Work::Convergence { sampler, spp } => UnitDoc::Convergence {
+        Work::Convergence {
+            sampler,
+            spp,
+            piece,
+        } => UnitDoc::Convergence {
             sampler: sampler.as_str().into(),
             spp,
+            band: piece.band,
+            bands: piece.cut.bands,
         },
     }
 }
@@ -177,16 +202,24 @@ fn work_of(doc: &UnitDoc) -> Result<Work> {
     Ok(match doc {
         UnitDoc::Reference {
             target,
-            part,
-            parts,
+            band,
+            bands,
+            range,
+            ranges,
         } => Work::Reference {
             target: match target.as_str() {
                 "main" => Target::Main,
                 "convergence" => Target::Convergence,
                 other => bail!("unknown reference target `{other}`"),
             },
-            part: *part,
-            parts: *parts,
+            piece: Piece {
+                band: *band,
+                range: *range,
+                cut: Cut {
+                    bands: *bands,
+                    ranges: *ranges,
+                },
+            },
         },
         UnitDoc::Run { sampler: s, seed } => Work::Run {
             sampler: sampler(s)?,
@@ -196,9 +229,22 @@ fn work_of(doc: &UnitDoc) -> Result<Work> {
             threshold: *threshold,
             seed: *seed,
         },
-        UnitDoc::Convergence { sampler: s, spp } => Work::Convergence {
+        UnitDoc::Convergence {
+            sampler: s,
+            spp,
+            band,
+            bands,
+        } => Work::Convergence {
             sampler: sampler(s)?,
             spp: *spp,
+            piece: Piece {
+                band: *band,
+                range: 0,
+                cut: Cut {
+                    bands: *bands,
+                    ranges: 1,
+                },
+            },
         },
     })
 }
@@ -222,6 +268,7 @@ fn settings(c: &ExperimentConfig) -> Settings {
         max_depth: c.max_depth,
         threads: c.threads,
         spectral: c.spectral,
+        unit_samples: c.unit_samples,
         command: c.command.clone(),
     }
 }
@@ -255,6 +302,7 @@ fn config(s: Settings, out: &Path) -> Result<ExperimentConfig> {
         max_depth: s.max_depth,
         threads: s.threads,
         spectral: s.spectral,
+        unit_samples: s.unit_samples,
         out: out.to_path_buf(),
         command: s.command,
     })

@@ -4,11 +4,15 @@
 //! them in any order and on any machine, and [`crate::assemble`] can turn
 //! their images into the same report.
 //!
-//! A unit is one render ([`Work`]): one band of rows of a reference that
-//! is not cached ([`reference_parts`]), one run (sampler x seed; never split in samples per pixel, since
+//! A unit is one render ([`Work`]): one piece of a reference that is not
+//! cached, one run (sampler x seed; never split in samples per pixel, since
 //! averaging seeds would change the estimator being measured), one render of
-//! the threshold sweep (threshold x seed), or one point of a convergence
-//! series (sampler x spp). Units need nothing from each other: the metrics
+//! the threshold sweep (threshold x seed), or one piece of a point of a
+//! convergence series (sampler x spp). A render of more camera samples than
+//! the unit budget ([`ExperimentConfig::unit_budget`]) is cut
+//! ([`crate::cut`]): a reference into bands of rows of tiles and, when one
+//! row of tiles holds more than the budget, sample ranges; a convergence
+//! point into bands only. Units need nothing from each other: the metrics
 //! against the reference are computed when the units are assembled.
 //!
 //! The calibration render of the one-machine run only estimates its time;
@@ -24,7 +28,7 @@ use lowdisc::catalog::SamplerName;
 use lowdisc_render::render::RenderOptions;
 
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
-use crate::progress::samples;
+use crate::cut::{Cut, Piece, cut, sample_range};
 use crate::run::options;
 use crate::sweep::THRESHOLDS;
 
@@ -40,14 +44,12 @@ pub enum Target {
 /// The render of one unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Work {
-    /// One band of rows of a reference render ([`band_rows`]).
+    /// One piece of a reference render ([`reference_cut`]).
     Reference {
         /// Which reference.
         target: Target,
-        /// The band, `0..parts`, from the top.
-        part: u32,
-        /// The number of bands of this reference ([`reference_parts`]).
-        parts: u32,
+        /// The piece.
+        piece: Piece,
     },
     /// One run of a compared sampler.
     Run {
@@ -63,37 +65,58 @@ pub enum Work {
         /// The seed (`0..runs`).
         seed: u64,
     },
-    /// One point of a sampler's convergence series (seed 0).
+    /// One piece of a point of a sampler's convergence series (seed 0;
+    /// [`convergence_cut`]: bands only).
     Convergence {
         /// The sampler.
         sampler: SamplerName,
         /// Samples per pixel (a power of two up to `conv_max`).
         spp: u32,
+        /// The piece.
+        piece: Piece,
     },
 }
 
 impl Work {
-    /// A short description: `reference main`, `run sobol seed 3`,
-    /// `sweep threshold 0.5 seed 1`, `convergence sobol 64 spp`.
+    /// A short description: `reference main band 2 of 5 range 1 of 8`,
+    /// `run sobol seed 3`, `sweep threshold 0.5 seed 1`, `convergence sobol
+    /// 64 spp` (a piece: `... band 1 of 2`).
     pub fn describe(&self) -> String {
         match *self {
-            Work::Reference {
-                target,
-                part,
-                parts,
-            } => {
+            Work::Reference { target, piece } => {
                 let name = match target {
                     Target::Main => "main",
                     Target::Convergence => "convergence",
                 };
-                format!("reference {name} part {} of {parts}", part + 1)
+                format!("reference {name}{}", piece.describe())
             }
             Work::Run { sampler, seed } => format!("run {} seed {seed}", sampler.as_str()),
             Work::Sweep { threshold, seed } => format!("sweep threshold {threshold} seed {seed}"),
-            Work::Convergence { sampler, spp } => {
-                format!("convergence {} {spp} spp", sampler.as_str())
-            }
+            Work::Convergence {
+                sampler,
+                spp,
+                piece,
+            } => format!(
+                "convergence {} {spp} spp{}",
+                sampler.as_str(),
+                piece.describe()
+            ),
         }
+    }
+
+    /// The piece of a cut render this unit renders ([`Piece::WHOLE`] for a
+    /// run or a sweep render).
+    pub fn piece(&self) -> Piece {
+        match *self {
+            Work::Reference { piece, .. } | Work::Convergence { piece, .. } => piece,
+            Work::Run { .. } | Work::Sweep { .. } => Piece::WHOLE,
+        }
+    }
+
+    /// Whether the unit keeps its pixels' sums (a piece of a reference or
+    /// of a convergence point, merged with the others) rather than an image.
+    pub fn keeps_sums(&self) -> bool {
+        matches!(self, Work::Reference { .. } | Work::Convergence { .. })
     }
 }
 
@@ -119,9 +142,10 @@ impl Unit {
         }
     }
 
-    /// The render options of its render.
+    /// The render options of its render (a piece's sample range
+    /// included; its window depends on the film, see [`Piece::window`]).
     pub fn options(&self, config: &ExperimentConfig) -> RenderOptions {
-        match self.work {
+        let mut o = match self.work {
             Work::Reference { target, .. } => {
                 let spp = reference_settings(config, target).1;
                 options(config, REF_SAMPLER, REF_SEED, spp)
@@ -132,22 +156,20 @@ impl Unit {
                 o.sampler.threshold = threshold;
                 o
             }
-            Work::Convergence { sampler, spp } => options(config, sampler, 0, spp),
+            Work::Convergence { sampler, spp, .. } => options(config, sampler, 0, spp),
+        };
+        let piece = self.work.piece();
+        if piece.cut.ranges > 1 {
+            o.samples = Some(sample_range(o.sampler.spp, piece.range, piece.cut.ranges));
         }
+        o
     }
 
-    /// The camera samples of its render (for a reference band of a scene
-    /// with a crop window, an upper bound).
+    /// The camera samples of its render (for a piece of a scene with a
+    /// crop window, an upper bound).
     pub fn samples(&self, config: &ExperimentConfig) -> u64 {
-        let [w, h] = self.resolution(config);
-        let rows = match self.work {
-            Work::Reference { part, parts, .. } => {
-                let [y0, y1] = band_rows(h, part, parts);
-                y1 - y0
-            }
-            _ => h,
-        };
-        samples([w, rows], self.options(config).sampler.spp)
+        let spp = self.options(config).sampler.spp;
+        self.work.piece().samples(self.resolution(config), spp)
     }
 }
 
@@ -159,34 +181,17 @@ pub fn reference_settings(config: &ExperimentConfig, target: Target) -> ([u32; 2
     }
 }
 
-/// The rows of a render's tiles ([`crate::run::options`]' tile size): the
-/// bands of a reference are whole rows of tiles.
-pub const BAND_ROWS: u32 = 16;
-
-/// The number of bands reference `target` is cut into: enough that no band
-/// has more samples than the largest other unit (a run, or the last point of
-/// a convergence series), at most one band per row of tiles. The bands'
-/// pixels are those of the whole render, bit for bit (the tile grid and
-/// the tiles' sampler streams are the whole film's); the bands are not
-/// split in samples per pixel, whose sums would merge only up to rounding.
-pub fn reference_parts(config: &ExperimentConfig, target: Target) -> u32 {
-    let ([w, h], spp) = reference_settings(config, target);
-    let largest = samples(config.resolution, config.spp)
-        .max(samples(config.conv_res, config.conv_max))
-        .max(1);
-    let wanted = samples([w, h], spp).div_ceil(largest);
-    let tile_rows = h.div_ceil(BAND_ROWS);
-    wanted.clamp(1, u64::from(tile_rows.max(1))) as u32
+/// The cut of reference `target` ([`crate::cut::cut`] at the unit budget,
+/// with sample ranges).
+pub fn reference_cut(config: &ExperimentConfig, target: Target) -> Cut {
+    let (resolution, spp) = reference_settings(config, target);
+    cut(resolution, spp, config.unit_budget(), true)
 }
 
-/// The rows `[y0, y1)` of band `part` of `parts` of an image `height` rows
-/// high (counted from the top of the film's pixel bounds): consecutive
-/// whole rows of tiles, as equal in number as they can be.
-pub fn band_rows(height: u32, part: u32, parts: u32) -> [u32; 2] {
-    let tile_rows = u64::from(height.div_ceil(BAND_ROWS));
-    let parts = u64::from(parts.max(1));
-    let edge = |p: u64| ((p * tile_rows / parts) as u32 * BAND_ROWS).min(height);
-    [edge(u64::from(part)), edge(u64::from(part) + 1)]
+/// The cut of the convergence point at `spp` ([`crate::cut::cut`] at the
+/// unit budget, in bands only: its image is the whole render's bit for bit).
+pub fn convergence_cut(config: &ExperimentConfig, spp: u32) -> Cut {
+    cut(config.conv_res, spp, config.unit_budget(), false)
 }
 
 /// Whether the convergence series use the main reference (same resolution
@@ -202,13 +207,8 @@ pub fn shares_reference(config: &ExperimentConfig) -> bool {
 pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
     let mut work = Vec::new();
     let reference = |work: &mut Vec<Work>, target| {
-        let parts = reference_parts(config, target);
-        for part in 0..parts {
-            work.push(Work::Reference {
-                target,
-                part,
-                parts,
-            });
+        for piece in reference_cut(config, target).pieces() {
+            work.push(Work::Reference { target, piece });
         }
     };
     if !cached[0] {
@@ -230,7 +230,13 @@ pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
     for &sampler in &config.samplers {
         let mut spp = 1;
         while spp <= config.conv_max {
-            work.push(Work::Convergence { sampler, spp });
+            for piece in convergence_cut(config, spp).pieces() {
+                work.push(Work::Convergence {
+                    sampler,
+                    spp,
+                    piece,
+                });
+            }
             spp *= 2;
         }
     }

@@ -4,6 +4,8 @@ use std::path::Path;
 
 use lowdisc::catalog::SamplerName;
 
+use lowdisc_render::render::SampleRange;
+
 use super::file::PlanFile;
 use super::*;
 
@@ -23,6 +25,7 @@ fn config() -> ExperimentConfig {
         max_depth: 5,
         threads: None,
         spectral: false,
+        unit_samples: None,
         out: "out".into(),
         command: vec!["lowdisc".into(), "experiment".into()],
         preset: None,
@@ -62,12 +65,12 @@ fn the_units_count_every_stage_once() {
 fn the_units_come_in_the_order_of_the_one_machine_run() {
     let plan = Plan::new(config(), 0, [false, false]);
     let w: Vec<String> = plan.units.iter().map(|u| u.work.describe()).collect();
-    assert_eq!(w[0], "reference main part 1 of 1");
+    assert_eq!(w[0], "reference main");
     assert_eq!(w[1], "run sobol seed 0");
     assert_eq!(w[6], "run halton seed 2");
     assert_eq!(w[7], "sweep threshold 0 seed 0");
     assert_eq!(w[27], "sweep threshold 1 seed 2");
-    assert_eq!(w[28], "reference convergence part 1 of 1");
+    assert_eq!(w[28], "reference convergence");
     assert_eq!(w[29], "convergence sobol 1 spp");
     assert_eq!(w[36], "convergence halton 8 spp");
     let sweep = plan.units[10].options(&plan.config);
@@ -115,7 +118,7 @@ fn an_edited_or_foreign_plan_is_refused() {
     );
     let other = text.replace(super::file::FORMAT, "something-else");
     let err = PlanFile::parse(&other, Path::new("d")).unwrap_err();
-    assert!(err.to_string().contains("not a version-1"), "{err}");
+    assert!(err.to_string().contains("not a version-2"), "{err}");
 }
 
 #[test]
@@ -131,35 +134,103 @@ fn relative_paths_start_at_the_planning_folder() {
     assert_eq!(file.plan.config.scene.unwrap(), Path::new("scenes/a.pbrt"));
 }
 
-#[test]
-fn reference_bands_cover_every_row_once_in_whole_tile_rows() {
-    for height in 1..200u32 {
-        let tile_rows = height.div_ceil(BAND_ROWS);
-        for parts in 1..=tile_rows {
-            let mut next = 0;
-            for part in 0..parts {
-                let [y0, y1] = band_rows(height, part, parts);
-                assert_eq!(y0, next, "height {height}, {parts} parts");
-                assert!(y1 > y0 && (y0 % BAND_ROWS == 0), "{height} {parts} {part}");
-                next = y1;
-            }
-            assert_eq!(next, height);
-        }
-    }
-    // The default experiment: 256x144 at 1024 spp and 128x72 at 8192 spp,
-    // against 128x72 at 1024 spp, its largest other unit.
+/// The default experiment's settings (with `config()`'s two samplers).
+fn default_settings() -> ExperimentConfig {
     let mut c = config();
     (c.resolution, c.spp, c.ref_spp) = ([256, 144], 16, 1024);
     (c.conv_res, c.conv_max, c.conv_ref_spp) = ([128, 72], 1024, 8192);
-    assert_eq!(reference_parts(&c, Target::Main), 4);
-    // 8 wanted, but 72 rows hold 5 rows of tiles.
-    assert_eq!(reference_parts(&c, Target::Convergence), 5);
-    assert_eq!(band_rows(144, 3, 4), [96, 144]);
-    assert_eq!(band_rows(72, 4, 5), [64, 72]);
-    let plan = Plan::new(c, 0, [false, false]);
-    let bands: u64 = plan.units[..4]
+    c
+}
+
+#[test]
+fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
+    let c = default_settings();
+    assert_eq!(c.unit_budget(), 1 << 23);
+    // 256x144 at 1024 spp: 2 rows of tiles (8.4 M samples) per band.
+    assert_eq!(
+        reference_cut(&c, Target::Main),
+        Cut {
+            bands: 5,
+            ranges: 1
+        }
+    );
+    // 128x72 at 8192 spp: one row of tiles is 16.8 M samples, so 2 ranges.
+    let conv = Cut {
+        bands: 5,
+        ranges: 2,
+    };
+    assert_eq!(reference_cut(&c, Target::Convergence), conv);
+    assert_eq!(
+        convergence_cut(&c, 1024),
+        Cut {
+            bands: 2,
+            ranges: 1
+        }
+    );
+    assert_eq!(convergence_cut(&c, 512), Cut::WHOLE);
+    let plan = Plan::new(c.clone(), 0, [false, false]);
+    let w: Vec<String> = plan.units.iter().map(|u| u.work.describe()).collect();
+    assert_eq!(w[4], "reference main band 5 of 5");
+    let conv_at = w
         .iter()
-        .map(|u| u.samples(&plan.config))
-        .sum();
-    assert_eq!(bands, 256 * 144 * 1024);
+        .position(|d| d.starts_with("reference conv"))
+        .unwrap();
+    assert_eq!(w[conv_at], "reference convergence band 1 of 5 range 1 of 2");
+    assert_eq!(
+        w[conv_at + 9],
+        "reference convergence band 5 of 5 range 2 of 2"
+    );
+    let last = &plan.units[conv_at + 9];
+    assert_eq!(
+        last.options(&c).sample_range(),
+        SampleRange::new(4096, 8192)
+    );
+    assert_eq!(last.samples(&c), 128 * 8 * 4096);
+    assert!(w.contains(&"convergence halton 1024 spp band 2 of 2".to_string()));
+    // Cutting moves no sample: the plan renders what the whole renders do.
+    let whole = 256 * 144 * 1024 + 128 * 72 * 8192;
+    let runs = (2 + 7) * 3 * 256 * 144 * 16 + 2 * 128 * 72 * 2047;
+    assert_eq!(plan.samples(), whole + runs);
+    // The cache key names the ranges: a cut with other ranges is another file.
+    let key = |c: &ExperimentConfig| crate::reference::cache_file(c, Target::Convergence, 1);
+    let mut finer = c.clone();
+    finer.unit_samples = Some(1 << 22);
+    assert_eq!(reference_cut(&finer, Target::Convergence).ranges, 4);
+    assert_ne!(key(&c), key(&finer));
+    finer.unit_samples = Some((1 << 23) + 1);
+    assert_eq!(key(&c), key(&finer));
+}
+
+#[test]
+fn the_paper_plans_longest_unit_is_a_run() {
+    let mut c = default_settings();
+    (c.resolution, c.runs, c.ref_spp) = ([1280, 720], 10, 4096);
+    c.conv_res = [640, 360];
+    let run = 1280 * 720 * 16;
+    assert_eq!(c.unit_budget(), run);
+    assert_eq!(
+        reference_cut(&c, Target::Main),
+        Cut {
+            bands: 45,
+            ranges: 6
+        }
+    );
+    let conv = Cut {
+        bands: 23,
+        ranges: 6,
+    };
+    assert_eq!(reference_cut(&c, Target::Convergence), conv);
+    assert_eq!(
+        convergence_cut(&c, 1024),
+        Cut {
+            bands: 23,
+            ranges: 1
+        }
+    );
+    let plan = Plan::new(c.clone(), 0, [false, false]);
+    let longest = plan.units.iter().map(|u| u.samples(&c)).max().unwrap();
+    assert_eq!(longest, run);
+    // 270 + 138 reference pieces, 20 runs, 70 sweep renders and 2 x 51
+    // convergence pieces.
+    assert_eq!(plan.units.len(), 270 + 138 + 20 + 70 + 2 * 51);
 }

@@ -5,6 +5,7 @@ use anyhow::Result;
 use serde_json::json;
 
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::plan::{Target, reference_cut};
 use crate::results::Results;
 
 fn cpu_model() -> String {
@@ -33,6 +34,7 @@ fn git_hash() -> Option<String> {
 /// The pretty-printed JSON document.
 pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<String> {
     let names: Vec<&str> = config.samplers.iter().map(|s| s.as_str()).collect();
+    let ref_ranges = [Target::Main, Target::Convergence].map(|t| reference_cut(config, t).ranges);
     let value = json!({
         "schema": 1,
         "command": config.command,
@@ -61,6 +63,8 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
             "conv_max": config.conv_max,
             "conv_res": config.conv_res,
             "conv_ref_spp": config.conv_ref_spp,
+            "unit_samples": config.unit_budget(),
+            "ref_ranges": ref_ranges,
             "samplers": names,
         },
         "reference": results.reference,

@@ -1,11 +1,11 @@
 //! Running the units of a plan: [`render_unit`] renders one (the same
 //! function for the one-machine run, through [`InProcess`], and for
 //! `lowdisc experiment unit`, through [`run_unit`]); [`FromFiles`] hands the
-//! finished units' images to the merge.
+//! finished units' renders to the merge.
 //!
 //! [`run_unit`] is idempotent and safe to rerun: a unit whose record and
-//! image are in place is skipped; otherwise it takes the unit's lock
-//! ([`lock`]), renders, writes the image and then the record ([`store`]),
+//! file are in place is skipped; otherwise it takes the unit's lock
+//! ([`lock`]), renders, writes the file and then the record ([`store`]),
 //! records a failure in `I.failed`, and removes the lock in every case.
 
 pub mod lock;
@@ -15,25 +15,28 @@ use std::path::Path;
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
-use lowdisc_render::film::{Film, PixelBounds};
+use lowdisc_render::film::Film;
 use lowdisc_render::render::render;
 use lowdisc_render::scene::Scene;
+use lowdisc_split::RenderPart;
 
-use crate::assemble::{UnitOutput, UnitSource};
+use crate::assemble::{Rendered, UnitOutput, UnitSource};
 use crate::config::ExperimentConfig;
+use crate::plan::Unit;
 use crate::plan::file::PlanFile;
-use crate::plan::{Unit, Work, band_rows};
 use crate::progress::{Progress, Stage};
 use crate::run::load;
 use lock::{Lock, host_name, unix_now};
 use store::{Record, Store};
 
-/// Renders `unit` of the experiment `config` with `scene`, first set to
-/// the unit's resolution (a reference band: only its rows of the film's
-/// pixel bounds), reporting its samples to `stage`.
+/// Renders `unit` of the experiment `config` with `scene` (whose content
+/// hashes to `scene_hash`), first set to the unit's resolution, reporting
+/// its samples to `stage`. A piece of a cut render renders its band's
+/// pixels over its sample range and keeps their sums.
 pub fn render_unit(
     config: &ExperimentConfig,
     scene: &mut Scene,
+    scene_hash: u64,
     unit: &Unit,
     stage: &Stage,
 ) -> Result<UnitOutput> {
@@ -42,18 +45,36 @@ pub fn render_unit(
         scene.set_resolution(resolution)?;
     }
     let mut options = unit.options(config);
-    if let Work::Reference { part, parts, .. } = unit.work {
+    let keeps_sums = unit.work.keeps_sums();
+    if keeps_sums {
         let bounds = Film::checked_bounds(&scene.film().params)?;
-        let [y0, y1] = band_rows(bounds.height() as u32, part, parts);
-        options.window = Some(PixelBounds::new(
-            [bounds.min[0], bounds.min[1] + y0 as i32],
-            [bounds.max[0], bounds.min[1] + y1 as i32],
-        ));
+        let window = unit.work.piece().window(bounds);
+        if window.area() == 0 {
+            // Bands are counted on the resolution; a crop window may hold
+            // fewer rows of tiles.
+            bail!(
+                "the scene's crop window leaves unit {} (`{}`) no pixels; plan with a larger --unit-samples",
+                unit.index,
+                unit.work.describe()
+            );
+        }
+        options.window = Some(window);
     }
     let out = render(scene, &options, stage)?;
     stage.finished_render(out.stats.samples);
+    let rendered = if keeps_sums {
+        let name = format!("{scene_hash:016x}");
+        Rendered::Sums(RenderPart::of_render(
+            name,
+            &scene.film().params,
+            &options,
+            &out,
+        )?)
+    } else {
+        Rendered::Image(out.image)
+    };
     Ok(UnitOutput {
-        image: out.image,
+        rendered,
         render_time_s: out.stats.time.as_secs_f64(),
     })
 }
@@ -64,11 +85,13 @@ pub struct InProcess<'a> {
     pub config: &'a ExperimentConfig,
     /// Its scene, loaded at the experiment's resolution.
     pub scene: &'a mut Scene,
+    /// The hash of the scene's content.
+    pub scene_hash: u64,
 }
 
 impl UnitSource for InProcess<'_> {
     fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput> {
-        render_unit(self.config, self.scene, unit, stage)
+        render_unit(self.config, self.scene, self.scene_hash, unit, stage)
     }
 }
 
@@ -86,10 +109,10 @@ impl UnitSource for FromFiles<'_> {
             .store
             .record(unit.index, &self.plan.id)?
             .with_context(|| format!("unit {} is not done", unit.index))?;
-        let image = self.store.image(&record)?;
+        let rendered = self.store.read(&record)?;
         stage.finished_render(record.samples);
         Ok(UnitOutput {
-            image,
+            rendered,
             render_time_s: record.render_time_s,
         })
     }
@@ -116,7 +139,7 @@ pub fn run_unit(
     let unit = *plan.unit(index)?;
     let store = Store::new(dir, plan.plan.units.len());
     match store.record(index, &plan.id) {
-        Ok(Some(record)) => match store.image(&record) {
+        Ok(Some(record)) => match store.read(&record) {
             Ok(_) => return Ok(UnitRun::AlreadyDone(record)),
             Err(e) => observer.note(&format!("{e:#}: rendering it again")),
         },
@@ -137,8 +160,23 @@ pub fn run_unit(
     Ok(UnitRun::Rendered(record))
 }
 
-/// Loads the plan's scene, checks it is the planned one, renders `unit`
-/// and writes its image and record.
+/// The configuration of the plan for loading (`threads` replacing the
+/// plan's thread count, if given) and its scene, checked to be the planned
+/// one: what every unit and the merge start from.
+pub fn planned_scene(
+    plan: &PlanFile,
+    threads: Option<usize>,
+    observer: &dyn Progress,
+) -> Result<(ExperimentConfig, Scene)> {
+    let mut config = plan.loading_config();
+    config.threads = threads.or(config.threads);
+    config.validate()?;
+    let (scene, hash) = load(&config, observer)?;
+    check_scene(plan, hash)?;
+    Ok((config, scene))
+}
+
+/// Loads the plan's scene, renders `unit` and writes its file and record.
 fn render_and_write(
     plan: &PlanFile,
     store: &Store,
@@ -147,14 +185,11 @@ fn render_and_write(
     observer: &dyn Progress,
 ) -> Result<Record> {
     let start = Instant::now();
-    let mut config = plan.loading_config();
-    config.threads = threads.or(config.threads);
-    config.validate()?;
-    let (mut scene, hash) = load(&config, observer)?;
-    check_scene(plan, hash)?;
+    let (config, mut scene) = planned_scene(plan, threads, observer)?;
     let title = format!("unit {}: {}", unit.index, unit.work.describe());
     let stage = Stage::begin(observer, &title, unit.samples(&config));
-    let out = render_unit(&config, &mut scene, unit, &stage)?;
+    let hash = plan.plan.scene_hash;
+    let out = render_unit(&config, &mut scene, hash, unit, &stage)?;
     stage.end();
     let record = Record {
         format: store::FORMAT.into(),
@@ -171,7 +206,7 @@ fn render_and_write(
         pid: std::process::id(),
         finished_unix_s: unix_now(),
     };
-    store.write(record, &out.image)
+    store.write(record, &out.rendered)
 }
 
 /// Refuses a scene whose content hash is not the plan's.

@@ -1,12 +1,18 @@
 //! The files of a plan's units in `DIR/units/`, for unit `I` (four digits,
 //! more when the plan has 10 000 units or more):
 //!
-//! - `I.pfm`: the unit's image, linear radiance as 32-bit floats (exact);
+//! - `I.pfm`: the image of a run or a sweep render, linear radiance as
+//!   32-bit floats (exact);
+//! - `I.exr`: instead, for a piece of a cut reference or convergence point,
+//!   a part file of `lowdisc-split` (its pixels' exact `f64` sums over its
+//!   sample range, and a header naming the plan's scene hash, the settings,
+//!   the window and the range), merged with the other pieces;
 //! - `I.json`: its record, written after the image, so a unit is done
 //!   exactly when a record of this plan names an image of the recorded
 //!   hash: `{ format: "lowdisc-experiment-unit", version: 1, plan_id,
-//!   index, work (as `status` prints it), image: "I.pfm", image_fnv1a,
-//!   samples, render_time_s, wall_time_s, host, pid, finished_unix_s }`;
+//!   index, work (as `status` prints it), image: "I.pfm" or "I.exr",
+//!   image_fnv1a, samples, render_time_s, wall_time_s, host, pid,
+//!   finished_unix_s }`;
 //! - `I.lock`: present while a process runs the unit ([`super::lock`]);
 //! - `I.failed`: the error of the last failed attempt, removed on success.
 //!
@@ -16,9 +22,11 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use lowdisc_image::RgbImage;
+use lowdisc_image::ImageFormat;
+use lowdisc_split::{decode_part, encode_part};
 use serde::{Deserialize, Serialize};
 
+use crate::assemble::Rendered;
 use crate::stats::{FNV_OFFSET, fnv1a};
 
 /// The `format` field of a unit record.
@@ -109,8 +117,9 @@ impl Store {
         Ok(Some(record))
     }
 
-    /// The image of a done unit, checked against its record's hash.
-    pub fn image(&self, record: &Record) -> Result<RgbImage> {
+    /// The render a done unit left, its file checked against its record's
+    /// hash: an image (`.pfm`) or a piece's sums (`.exr`).
+    pub fn read(&self, record: &Record) -> Result<Rendered> {
         let path = self.dir.join(&record.image);
         let bytes = lowdisc_files::read_input(&path)?;
         if format!("{:016x}", fnv1a(FNV_OFFSET, &bytes)) != record.image_fnv1a {
@@ -120,26 +129,29 @@ impl Store {
                 record.index
             );
         }
-        lowdisc_image::decode_image(
-            &bytes,
-            lowdisc_image::ImageFormat::Pfm,
-            &lowdisc_image::ReadOptions::default(),
-        )
-        .with_context(|| format!("cannot read `{}`", path.display()))
+        let what = || format!("cannot read `{}`", path.display());
+        if record.image.ends_with(".exr") {
+            return Ok(Rendered::Sums(decode_part(&bytes).with_context(what)?));
+        }
+        let options = lowdisc_image::ReadOptions::default();
+        let image = lowdisc_image::decode_image(&bytes, ImageFormat::Pfm, &options);
+        Ok(Rendered::Image(image.with_context(what)?))
     }
 
-    /// Writes the image of unit `index`, then its record (whose image
-    /// fields are filled in here).
-    pub fn write(&self, mut record: Record, image: &RgbImage) -> Result<Record> {
+    /// Writes the file of unit `index` (a `.pfm` image or a piece's `.exr`
+    /// part file), then its record (whose image fields are filled in here).
+    pub fn write(&self, mut record: Record, rendered: &Rendered) -> Result<Record> {
         let index = record.index;
-        let image_path = self.file(index, "pfm");
-        let bytes = lowdisc_image::encode_image(
-            image,
-            lowdisc_image::ImageFormat::Pfm,
-            &lowdisc_image::WriteOptions::default(),
-        )?;
-        lowdisc_files::write_bytes(&image_path, &bytes)?;
-        record.image = file_name(&image_path);
+        let (path, bytes) = match rendered {
+            Rendered::Image(image) => {
+                let options = lowdisc_image::WriteOptions::default();
+                let bytes = lowdisc_image::encode_image(image, ImageFormat::Pfm, &options)?;
+                (self.file(index, "pfm"), bytes)
+            }
+            Rendered::Sums(part) => (self.file(index, "exr"), encode_part(part)?),
+        };
+        lowdisc_files::write_bytes(&path, &bytes)?;
+        record.image = file_name(&path);
         record.image_fnv1a = format!("{:016x}", fnv1a(FNV_OFFSET, &bytes));
         let text = serde_json::to_string_pretty(&record)? + "\n";
         lowdisc_files::write_bytes(self.file(index, "json"), text.as_bytes())?;

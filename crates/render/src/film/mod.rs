@@ -44,6 +44,13 @@ pub enum FilmError {
     /// ISO, exposure time or maximum component value not positive and finite
     /// (the maximum may be infinite).
     InvalidSensor(&'static str, f32),
+    /// Sums given for a film ([`Film::set_sums`]) whose pixel count differs.
+    SumCount {
+        /// The film's pixels.
+        pixels: usize,
+        /// The sums given.
+        sums: usize,
+    },
     /// Building or writing the image failed.
     Image(ImageError),
 }
@@ -58,6 +65,9 @@ impl std::fmt::Display for FilmError {
             FilmError::EmptyPixelBounds(b) => write!(f, "film pixel bounds {b:?} are empty"),
             FilmError::InvalidSensor(n, v) => {
                 write!(f, "film parameter \"{n}\" = {v} must be positive")
+            }
+            FilmError::SumCount { pixels, sums } => {
+                write!(f, "{sums} pixel sums given for a film of {pixels} pixels")
             }
             FilmError::Image(e) => write!(f, "{e}"),
         }
@@ -326,6 +336,20 @@ impl Film {
     /// Every pixel's sums, row-major over [`Self::pixel_bounds`].
     pub fn sums(&self) -> &[PixelSum] {
         &self.acc.pixels
+    }
+
+    /// Replaces every pixel's sums with `sums` (row-major over
+    /// [`Self::pixel_bounds`]), such as the merged sums of a split render's
+    /// parts; the counters are kept.
+    pub fn set_sums(&mut self, sums: &[PixelSum]) -> Result<(), FilmError> {
+        if sums.len() != self.acc.pixels.len() {
+            return Err(FilmError::SumCount {
+                pixels: self.acc.pixels.len(),
+                sums: sums.len(),
+            });
+        }
+        self.acc.pixels.copy_from_slice(sums);
+        Ok(())
     }
 
     /// An empty tile over `bounds` clipped to the film, with the film's

@@ -42,7 +42,7 @@ pub use crate::error::RenderError;
 pub use options::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE, RenderOptions, SampleRange};
 
 use crate::camera::camera_sample;
-use crate::film::{Film, FilmTile, PixelBounds};
+use crate::film::{Film, FilmError, FilmParams, FilmTile, PixelBounds, PixelSum};
 use crate::integrator::{PathIntegrator, PathStats};
 use crate::scene::Scene;
 use crate::spectrum::sensor::{output_from_sensor, sample_xyz};
@@ -157,10 +157,7 @@ pub fn render(
     let full = Film::checked_bounds(params).map_err(RenderError::Film)?;
     let window = opts.window_in(full)?;
     let range = opts.sample_range();
-    let mut film = Film::with_window(params, Some(window)).map_err(RenderError::Film)?;
-    if opts.spectral {
-        film.set_output_from_sensor(Some(output_from_sensor(params.white_balance)));
-    }
+    let mut film = output_film(params, window, opts.spectral).map_err(RenderError::Film)?;
     let sampler = SamplerConfig {
         resolution: film.full_resolution(),
         ..opts.sampler
@@ -228,6 +225,37 @@ pub fn render(
         stats,
         warnings,
     })
+}
+
+/// The empty film a render accumulates into: the pixels of `window` inside
+/// the film of `params`, whose output is sRGB from the sensor's XYZ when
+/// `spectral`.
+pub fn output_film(
+    params: &FilmParams,
+    window: PixelBounds,
+    spectral: bool,
+) -> Result<Film, FilmError> {
+    let mut film = Film::with_window(params, Some(window))?;
+    if spectral {
+        film.set_output_from_sensor(Some(output_from_sensor(params.white_balance)));
+    }
+    Ok(film)
+}
+
+/// The image that a render (spectral or not) of `window` of the film of
+/// `params` whose pixel sums are `sums` (row-major over the window) gives:
+/// the same values as that render's own image. Merged sums of a split
+/// render's parts become the merged image through it.
+pub fn image_of_sums(
+    params: &FilmParams,
+    window: PixelBounds,
+    spectral: bool,
+    sums: &[PixelSum],
+) -> Result<lowdisc_image::RgbImage, FilmError> {
+    // A window reaching outside the film keeps fewer pixels than `sums`.
+    let mut film = output_film(params, window, spectral)?;
+    film.set_sums(sums)?;
+    film.to_image()
 }
 
 /// Shared progress counters.
