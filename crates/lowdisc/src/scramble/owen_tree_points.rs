@@ -59,16 +59,35 @@ impl OwenTreePoints {
         Self::portable(seed, d)
     }
 
+    /// Whether [`OwenTreePoints::new`] gives the vector kernel on this CPU
+    /// (if not, a caller may build the portable keys itself, e.g. in
+    /// parallel, with [`OwenTreePoints::portable_key`]).
+    pub fn vector_kernel_available() -> bool {
+        #[cfg(all(feature = "std", target_arch = "x86_64", lowdisc_avx512))]
+        if super::owen_tree_avx512::available() {
+            return true;
+        }
+        false
+    }
+
     /// The same scramble without vector instructions, on any CPU.
     pub fn portable(seed: u64, d: u32) -> Self {
+        Self::from_keys((0..d).map(|j| Self::portable_key(seed, j, d)).collect())
+    }
+
+    /// The portable kernel's key of dimension `dim` of `d` under `seed`:
+    /// `OwenTreeKey::new(seed, dim)`'s values, with the 4096-entry table for
+    /// up to 1024 dimensions and the 64-entry one beyond.
+    pub fn portable_key(seed: u64, dim: u32, d: u32) -> OwenTreeKey {
         let table = if d <= LARGE_TABLE_DIMENSIONS { 12 } else { 6 };
+        OwenTreeKey::with_table(seed, dim, table)
+    }
+
+    /// The portable kernel with the keys of dimensions `0..keys.len()`.
+    pub fn from_keys(keys: Vec<OwenTreeKey>) -> Self {
         OwenTreePoints {
-            d: d as usize,
-            kernel: Kernel::Portable(
-                (0..d)
-                    .map(|j| OwenTreeKey::with_table(seed, j, table))
-                    .collect(),
-            ),
+            d: keys.len(),
+            kernel: Kernel::Portable(keys),
         }
     }
 

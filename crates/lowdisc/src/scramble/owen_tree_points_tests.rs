@@ -27,7 +27,7 @@ fn one_by_one(seed: u64, d: usize, input: &[u32], digits: u32) -> Vec<u32> {
 }
 
 #[test]
-fn both_kernels_equal_the_key_of_each_dimension() {
+fn every_kernel_equals_the_key_of_each_dimension() {
     let cases = [
         (0u64, 1usize),
         (1, 3),
@@ -41,6 +41,12 @@ fn both_kernels_equal_the_key_of_each_dimension() {
         let kernels = [
             OwenTreePoints::new(seed, d as u32),
             OwenTreePoints::portable(seed, d as u32),
+            // The 64-entry tables (as beyond 1024 dimensions).
+            OwenTreePoints::from_keys(
+                (0..d as u32)
+                    .map(|j| OwenTreePoints::portable_key(seed, j, 2000))
+                    .collect(),
+            ),
         ];
         for digits in 1..=32 {
             let want = one_by_one(seed, d, &input, digits);
@@ -97,5 +103,6 @@ fn the_vector_kernel_runs_where_the_cpu_has_it() {
     #[cfg(not(all(target_arch = "x86_64", lowdisc_avx512)))]
     let expected = false;
     assert_eq!(OwenTreePoints::new(1, 9).is_vectorised(), expected);
+    assert_eq!(OwenTreePoints::vector_kernel_available(), expected);
     assert!(!OwenTreePoints::portable(1, 9).is_vectorised());
 }

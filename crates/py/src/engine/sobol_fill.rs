@@ -63,7 +63,16 @@ impl Scrambler {
                     .filter_map(|j| RandomizeStrategy::Owen.prepare(dimension_seed(seed, j)))
                     .collect(),
             ),
-            "owen" => Scrambler::Tree(OwenTreePoints::new(seed, d)),
+            "owen" if OwenTreePoints::vector_kernel_available() => {
+                Scrambler::Tree(OwenTreePoints::new(seed, d))
+            }
+            // The portable keys' tables (8 KiB each), built on all cores.
+            "owen" => Scrambler::Tree(OwenTreePoints::from_keys(
+                (0..d)
+                    .into_par_iter()
+                    .map(|j| OwenTreePoints::portable_key(seed, j, d))
+                    .collect(),
+            )),
             // "none", the one name left that check_name accepts.
             _ => Scrambler::None,
         })
