@@ -2,9 +2,9 @@
 //! instructions per value with callgrind (deterministic, unlike wall time):
 //!
 //! ```text
-//! cargo build --release -p lowdisc-py --example sobol_fill_cost
+//! cargo build --profile wheel -p lowdisc-py --example sobol_fill_cost
 //! valgrind --tool=callgrind --callgrind-out-file=/dev/null \
-//!     target/release/examples/sobol_fill_cost owen 16384 64 30
+//!     target/wheel/examples/sobol_fill_cost owen 16384 64 30
 //! ```
 //!
 //! Arguments: scramble (`none`, `owen`, ...), n, d, bits; the request is
