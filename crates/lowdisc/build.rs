@@ -15,6 +15,7 @@ const BITS: usize = 32;
 
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
+    avx512_cfg();
     let params = sobol::params::JoeKuoD6::extended();
     let num_dimensions = params.dim_params.len() + 1;
     assert_eq!(num_dimensions, 21_201, "unexpected Joe-Kuo table size");
@@ -46,6 +47,30 @@ fn main() {
         format!("/// Number of Sobol dimensions in the table.\npub const NUM_DIMENSIONS: usize = {num_dimensions};\n"),
     )
     .expect("cannot write dimension count");
+}
+
+/// Sets `cfg(lowdisc_avx512)` when the compiler has the AVX-512 intrinsics
+/// and target features (stable from Rust 1.89): the vectorised Owen tree
+/// kernel (`scramble/owen_tree_avx512.rs`) is compiled only then, so older
+/// compilers of the declared `rust-version` still build the crate.
+fn avx512_cfg() {
+    println!("cargo:rustc-check-cfg=cfg(lowdisc_avx512)");
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    let version = std::process::Command::new(rustc)
+        .arg("--version")
+        .output()
+        .ok()
+        .and_then(|out| String::from_utf8(out.stdout).ok())
+        .unwrap_or_default();
+    // "rustc 1.95.0 (59807616e 2026-04-14)" -> 95
+    let minor = version
+        .split_whitespace()
+        .nth(1)
+        .and_then(|v| v.split('.').nth(1))
+        .and_then(|m| m.parse::<u32>().ok());
+    if minor.is_some_and(|m| m >= 89) {
+        println!("cargo:rustc-cfg=lowdisc_avx512");
+    }
 }
 
 /// The 32 generator-matrix columns of one dimension from its primitive

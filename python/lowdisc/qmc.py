@@ -89,7 +89,8 @@ class Sobol(_Base):
     """scipy.stats.qmc.Sobol with lowdisc's Sobol (Joe & Kuo, Gray-code order).
 
     ``randomize``: the scramble used when ``scramble=True``: ``"owen"``
-    (nested uniform, exact in distribution, 3 hashes per value at 30 bits),
+    (nested uniform, exact in distribution, a few hashes per value, eight
+    dimensions per instruction on CPUs with AVX-512),
     ``"owen-per-digit"`` (the same law, the renderer's ``sobol-owen``
     values), ``"fast-owen"`` (hash-based) or ``"xor"`` (random digital shift).
     """

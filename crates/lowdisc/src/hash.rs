@@ -5,13 +5,16 @@
 //! finaliser (David Stafford's published constants); the combination scheme
 //! is lowdisc's own.
 
+/// The two multipliers of [`mix64`] (for vectorised copies of it).
+pub(crate) const MIX64_MULTIPLIERS: [u64; 2] = [0xbf58_476d_1ce4_e5b9, 0x94d0_49bb_1331_11eb];
+
 /// A strong 64-bit bit mixer (bijective).
 #[inline]
 pub fn mix64(mut x: u64) -> u64 {
     x ^= x >> 30;
-    x = x.wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    x = x.wrapping_mul(MIX64_MULTIPLIERS[0]);
     x ^= x >> 27;
-    x = x.wrapping_mul(0x94d0_49bb_1331_11eb);
+    x = x.wrapping_mul(MIX64_MULTIPLIERS[1]);
     x ^= x >> 31;
     x
 }

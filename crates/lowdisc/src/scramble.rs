@@ -29,10 +29,14 @@
 mod cache;
 pub mod lms;
 pub mod owen_tree;
+#[cfg(all(feature = "std", target_arch = "x86_64", lowdisc_avx512))]
+mod owen_tree_avx512;
+mod owen_tree_points;
 
 pub use cache::{PreparedKey, ScrambleCache};
 pub use lms::{LmsKey, lms_scramble};
 pub use owen_tree::OwenTreeKey;
+pub use owen_tree_points::OwenTreePoints;
 
 use crate::hash::{hash2, mix64};
 

@@ -42,9 +42,9 @@ pub const SUBTREE_DEPTH: u32 = 6;
 /// Leading digits whose flips are kept in the key's table.
 pub const TABLE_DIGITS: u32 = 12;
 /// Layers of [`SUBTREE_DEPTH`] levels that cover the 32 digits.
-const LAYERS_TOTAL: usize = 32_usize.div_ceil(SUBTREE_DEPTH as usize);
+pub(super) const LAYERS_TOTAL: usize = 32_usize.div_ceil(SUBTREE_DEPTH as usize);
 /// SplitMix64's increment (the golden ratio times `2^64`, odd).
-const GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
+pub(super) const GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
 /// Salt of the seed (so this scramble's randomness is not another's).
 const SALT: u64 = 0x6f77_656e_5f74_7265;
 
@@ -101,10 +101,8 @@ impl OwenTreeKey {
     /// flips: 6 (64 entries, one hash more per value) or 12 (4096 entries);
     /// other values are rounded to these. The values do not depend on it.
     pub fn with_table(seed: u64, dim: u32, table_digits: u32) -> Self {
-        let salted = derive_seed(seed, SALT);
-        let layer_keys = core::array::from_fn(|t| hash3(salted, u64::from(dim), t as u64));
         let mut key = OwenTreeKey {
-            layer_keys,
+            layer_keys: layer_keys(seed, dim),
             table_digits: if table_digits > SUBTREE_DEPTH {
                 TABLE_DIGITS
             } else {
@@ -192,6 +190,12 @@ impl OwenTreeKey {
         }
         flips
     }
+}
+
+/// `K_t` of the layers `t` of dimension `dim` under `seed`.
+pub(super) fn layer_keys(seed: u64, dim: u32) -> [u64; LAYERS_TOTAL] {
+    let salted = derive_seed(seed, SALT);
+    core::array::from_fn(|t| hash3(salted, u64::from(dim), t as u64))
 }
 
 /// The layers that hold the first `digits` digits, `ceil(digits / 6)`.

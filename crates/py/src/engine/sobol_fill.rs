@@ -6,19 +6,20 @@
 //! XORing one column into every dimension (`trailing_zeros` of the index);
 //! in natural order every value is a matrix product. Each word is scrambled
 //! by the per-dimension state of a [`Scrambler`], built once per request,
-//! and converted as it is stored, so no intermediate array is kept. Every
-//! value depends only on its index and dimension: chunks can run on any
-//! thread in any order and give the same bits.
+//! and converted as it is stored. The Owen tree scramble works on blocks of
+//! points at once (its vector kernel takes eight dimensions per
+//! instruction), through a small buffer of words. Every value depends only
+//! on its index and dimension: chunks can run on any thread in any order
+//! and give the same bits.
 
-use lowdisc::scramble::{OwenTreeKey, PreparedKey, RandomizeStrategy, dimension_seed, owen_tree};
+use lowdisc::scramble::{OwenTreePoints, PreparedKey, RandomizeStrategy, dimension_seed};
 use lowdisc::sobol::{self, gray_code};
 use rayon::prelude::*;
 
 use super::{CHUNK_VALUES, EngineError, Result};
 
-/// Dimensions up to this get Owen keys with the 4096-entry table (8 KiB
-/// each); beyond, the 64-entry one (the values are the same).
-const LARGE_TABLE_DIMENSIONS: u32 = 1024;
+/// Words per block of the Owen tree scramble's buffer (16 KiB, in L1).
+const TREE_BLOCK_VALUES: usize = 4096;
 
 /// The per-dimension state of one request's scramble.
 pub enum Scrambler {
@@ -30,8 +31,9 @@ pub enum Scrambler {
     /// The catalog's per-digit exact Owen scramble (`owen-per-digit`: the
     /// renderer's `sobol-owen` values), prepared per dimension.
     PerDigit(Vec<PreparedKey>),
-    /// Owen scrambling at a few hashes per value ([`OwenTreeKey`], `owen`).
-    Tree(Vec<OwenTreeKey>),
+    /// Owen scrambling at a few hashes per value
+    /// ([`lowdisc::scramble::OwenTreeKey`], `owen`), whole points at once.
+    Tree(OwenTreePoints),
 }
 
 /// The names [`Scrambler::new`] accepts.
@@ -61,22 +63,24 @@ impl Scrambler {
                     .filter_map(|j| RandomizeStrategy::Owen.prepare(dimension_seed(seed, j)))
                     .collect(),
             ),
-            "owen" => {
-                let table = if d <= LARGE_TABLE_DIMENSIONS { 12 } else { 6 };
-                Scrambler::Tree(
-                    (0..d)
-                        .into_par_iter()
-                        .map(|j| OwenTreeKey::with_table(seed, j, table))
-                        .collect(),
-                )
+            "owen" if OwenTreePoints::vector_kernel_available() => {
+                Scrambler::Tree(OwenTreePoints::new(seed, d))
             }
+            // The portable keys' tables (8 KiB each), built on all cores.
+            "owen" => Scrambler::Tree(OwenTreePoints::from_keys(
+                (0..d)
+                    .into_par_iter()
+                    .map(|j| OwenTreePoints::portable_key(seed, j, d))
+                    .collect(),
+            )),
             // "none", the one name left that check_name accepts.
             _ => Scrambler::None,
         })
     }
 
     /// Scrambles one point's words into `out`, keeping `digits` leading
-    /// digits and converting each word with `convert`.
+    /// digits and converting each word with `convert` (all but the tree
+    /// scramble, which [`fill`] runs on blocks of points).
     #[inline]
     fn row<T>(&self, words: &[u32], out: &mut [T], digits: u32, convert: &impl Fn(u32) -> T) {
         let mask = u32::MAX << (32 - digits);
@@ -89,29 +93,14 @@ impl Scrambler {
             Scrambler::PerDigit(keys) => pairs
                 .zip(keys)
                 .for_each(|((o, &w), k)| *o = convert(k.scramble(w) & mask)),
-            Scrambler::Tree(keys) => match owen_tree::layers_of(digits) {
-                0..=2 => tree_row::<2, T>(keys, words, out, digits, convert),
-                3 => tree_row::<3, T>(keys, words, out, digits, convert),
-                4 => tree_row::<4, T>(keys, words, out, digits, convert),
-                5 => tree_row::<5, T>(keys, words, out, digits, convert),
-                _ => tree_row::<6, T>(keys, words, out, digits, convert),
-            },
+            Scrambler::Tree(keys) => {
+                let mut scrambled = words.to_vec();
+                keys.scramble_points(&mut scrambled, digits);
+                pairs
+                    .zip(&scrambled)
+                    .for_each(|((o, _), &w)| *o = convert(w));
+            }
         }
-    }
-}
-
-/// One point's tree-scrambled words, `LAYERS` layers hashed (so the loop is
-/// unrolled at compile time).
-#[inline(always)]
-fn tree_row<const LAYERS: usize, T>(
-    keys: &[OwenTreeKey],
-    words: &[u32],
-    out: &mut [T],
-    digits: u32,
-    convert: &impl Fn(u32) -> T,
-) {
-    for ((o, &w), k) in out.iter_mut().zip(words).zip(keys) {
-        *o = convert(k.scramble_layers::<LAYERS>(w, digits));
     }
 }
 
@@ -145,35 +134,84 @@ pub fn fill<T: Send>(
     out.par_chunks_mut(per * d)
         .enumerate()
         .for_each(|(c, block)| {
-            let first = range.start + (c * per) as u64;
-            let mut words = vec![0u32; d];
-            let rows = block.chunks_exact_mut(d);
-            if range.natural_order {
-                for (k, row) in (first..).zip(rows) {
-                    for (j, w) in words.iter_mut().enumerate() {
-                        *w = sobol::sample(k as u32, j as u32);
-                    }
-                    scrambler.row(&words, row, range.digits, &convert);
+            let mut walk = Walk::new(range, &columns, range.start + (c * per) as u64);
+            let Scrambler::Tree(keys) = scrambler else {
+                for row in block.chunks_exact_mut(d) {
+                    scrambler.row(&walk.words, row, range.digits, &convert);
+                    walk.advance();
                 }
                 return;
-            }
-            for (j, w) in words.iter_mut().enumerate() {
-                *w = sobol::sample(gray_code(first as u32), j as u32);
-            }
-            for (k, row) in (first..).zip(rows) {
-                scrambler.row(&words, row, range.digits, &convert);
-                // Point k + 1 (< 2^32 while rows remain) XORs its column.
-                let c = (k + 1).trailing_zeros().min(31) as usize;
-                for (w, &col) in words.iter_mut().zip(&columns[c * d..(c + 1) * d]) {
-                    *w ^= col;
+            };
+            let mut buffer = vec![0u32; (TREE_BLOCK_VALUES / d).max(1) * d];
+            for rows in block.chunks_mut(buffer.len()) {
+                let words = &mut buffer[..rows.len()];
+                for point in words.chunks_exact_mut(d) {
+                    point.copy_from_slice(&walk.words);
+                    walk.advance();
+                }
+                keys.scramble_points(words, range.digits);
+                for (o, &w) in rows.iter_mut().zip(words.iter()) {
+                    *o = convert(w);
                 }
             }
         });
 }
 
+/// The digit words of consecutive points, from a chunk's first.
+struct Walk<'a> {
+    /// The words of point `index`.
+    words: Vec<u32>,
+    /// The current point's index.
+    index: u64,
+    /// Natural order (else Gray code).
+    natural_order: bool,
+    /// The generator matrices' columns, `columns[c * d + j]`.
+    columns: &'a [u32],
+}
+
+impl<'a> Walk<'a> {
+    fn new(range: SobolRange, columns: &'a [u32], first: u64) -> Self {
+        let mut walk = Walk {
+            words: vec![0; range.d],
+            index: first,
+            natural_order: range.natural_order,
+            columns,
+        };
+        walk.compute();
+        walk
+    }
+
+    /// The words of point `index` from scratch (a matrix product each).
+    fn compute(&mut self) {
+        let k = self.index as u32;
+        let k = if self.natural_order { k } else { gray_code(k) };
+        for (j, w) in self.words.iter_mut().enumerate() {
+            *w = sobol::sample(k, j as u32);
+        }
+    }
+
+    /// On to the next point (past the last one the words are meaningless).
+    #[inline]
+    fn advance(&mut self) {
+        self.index += 1;
+        if self.natural_order {
+            self.compute();
+            return;
+        }
+        // Gray code: point k + 1 (< 2^32 while points remain) XORs column
+        // trailing_zeros(k + 1) into every dimension.
+        let d = self.words.len();
+        let c = self.index.trailing_zeros().min(31) as usize;
+        for (w, &col) in self.words.iter_mut().zip(&self.columns[c * d..(c + 1) * d]) {
+            *w ^= col;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lowdisc::scramble::OwenTreeKey;
     use lowdisc::sobol::GrayCodeBatch;
 
     fn words(scramble: &str, n: usize, d: usize, start: u64, natural: bool) -> Vec<u32> {
@@ -213,6 +251,33 @@ mod tests {
         for (k, point) in (100..).zip(got.chunks_exact(d)) {
             for ((j, &w), key) in (0..).zip(point).zip(&keys) {
                 assert_eq!(w, key.scramble(sobol::sample(k, j)));
+            }
+        }
+    }
+
+    #[test]
+    fn gray_code_tree_scrambled_points_keep_the_asked_digits() {
+        // 13 dimensions (not a multiple of the vector width), chunks of 5041
+        // points, blocks of 315: 12,000 points cross both kinds of boundary.
+        let (n, d, start) = (12_000, 13, 77);
+        let plain = words("none", n, d, start, false);
+        let keys: Vec<_> = (0..d as u32).map(|j| OwenTreeKey::new(3, j)).collect();
+        for digits in [30, 17] {
+            let mut out = vec![0u32; n * d];
+            let range = SobolRange {
+                start,
+                d,
+                natural_order: false,
+                digits,
+            };
+            fill(
+                &mut out,
+                range,
+                &Scrambler::new("owen", 3, d as u32).unwrap(),
+                |w| w,
+            );
+            for (i, (&got, &w)) in out.iter().zip(&plain).enumerate() {
+                assert_eq!(got, keys[i % d].scramble_digits(w, digits), "value {i}");
             }
         }
     }
