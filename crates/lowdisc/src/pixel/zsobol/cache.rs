@@ -325,7 +325,7 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
         let level = levels[top - 1 - j as usize];
         for v in (0..1usize << (2 * j)).rev() {
             let p = permutation_index(level, (code << (2 * j)) | v as u64);
-            let prefixed = SPREAD_PERMUTATIONS[p] | u32::from(entry.top[v] << 2) * 0x0101_0101;
+            let prefixed = SPREAD_PERMUTATIONS[p] | (u32::from(entry.top[v] << 2) * 0x0101_0101);
             entry.top[4 * v..4 * v + 4].copy_from_slice(&prefixed.to_le_bytes());
         }
     }
