@@ -21,6 +21,10 @@
 //! * **Per value**: one lookup in that table, the sample digits below those
 //!   four (one bit mix each; none for `m <= 9`), the odd low bit's flip, a
 //!   table lookup of the Sobol words of the low bits and the scramble.
+//!   With no sample digits below the table's (`m` even, at most 8: `spp`
+//!   1, 4, 16, 64 or 256) and the fast Owen scramble, that path makes no
+//!   call, so it inlines into the caller; refreshes, hashed digits and the
+//!   other scrambles are out of line.
 //!
 //! Keys `0..CACHED_KEYS` and the pixel key are cached; any other key takes
 //! the direct path.
