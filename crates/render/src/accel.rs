@@ -6,9 +6,9 @@
 //! the primitive kind; other shapes (spheres, disks) are tested one by one.
 
 use crate::bvh::{BuildOptions, Bvh, BvhStats};
-use crate::geometry::triangle::Tri4;
+use crate::geometry::triangle::{FlatFrame, Tri4};
 use crate::geometry::{Prim, PrimHit, ShapeSet, SurfaceHit};
-use crate::math::{Bounds3, Ray};
+use crate::math::{Bounds3, Frame, Ray};
 use rayon::prelude::*;
 
 /// A ray hit: which primitive, and the surface there.
@@ -18,6 +18,11 @@ pub struct Hit {
     pub prim: Prim,
     /// Surface information at the hit.
     pub surface: SurfaceHit,
+    /// The shading frame of a BSDF at the hit,
+    /// `Frame::shading(surface.ns, surface.dpdu)`, when it is kept per
+    /// primitive (triangles without shading normals); see
+    /// [`crate::bsdf::material::Material::bsdf_in_frame`].
+    pub shading: Option<Frame>,
 }
 
 /// Shapes plus a BVH over all their primitives.
@@ -31,6 +36,8 @@ pub struct Accel {
     tris: Vec<Tri4>,
     /// Per packet: bit `l` set when lane `l` is a triangle.
     tri_lanes: Vec<u8>,
+    /// In leaf order: the triangle's [`FlatFrame`], if it has one.
+    frames: Vec<Option<FlatFrame>>,
     bounds: Bounds3,
 }
 
@@ -69,12 +76,22 @@ impl Accel {
                 (packet, mask)
             })
             .unzip();
+        let frames = (prims.par_iter())
+            .map(|&p| match p {
+                Prim::Triangle { mesh, tri } => {
+                    let m = &shapes.meshes[mesh as usize];
+                    m.flat_frame(tri as usize, m.vertices(tri as usize))
+                }
+                _ => None,
+            })
+            .collect();
         Accel {
             shapes,
             bvh,
             prims,
             tris,
             tri_lanes,
+            frames,
             bounds,
         }
     }
@@ -189,16 +206,19 @@ impl Accel {
         let (k, h) = self.closest(ray, t_max)?;
         let k = k as usize;
         let prim = self.prims[k];
+        let frame = self.frames[k];
         let surface = match prim {
-            // The vertices just tested are at hand in leaf order.
-            Prim::Triangle { mesh, tri } => self.shapes.meshes[mesh as usize].surface_hit_at(
-                tri as usize,
-                &h,
-                self.tris[k / 4].get(k % 4),
-            ),
+            Prim::Triangle { mesh, tri } => {
+                let (m, tri) = (&self.shapes.meshes[mesh as usize], tri as usize);
+                m.surface_hit_at(tri, &h, m.vertices(tri), frame)
+            }
             p => self.shapes.surface_hit(p, ray, &h),
         };
-        Some(Hit { prim, surface })
+        Some(Hit {
+            prim,
+            surface,
+            shading: frame.map(|f| f.shading),
+        })
     }
 
     /// True if anything is hit in `(0, t_max)` (shadow rays).

@@ -75,22 +75,27 @@ pub trait WordSampler {
 }
 
 impl<T: WordSampler> PixelSampler for T {
+    #[inline]
     fn samples_per_pixel(&self) -> u32 {
         WordSampler::samples_per_pixel(self)
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         WordSampler::start_pixel_sample(self, pixel, sample_index, dimension);
     }
 
+    #[inline]
     fn get_1d(&mut self) -> f32 {
         crate::to_f32(self.get_1d_word())
     }
 
+    #[inline]
     fn get_2d(&mut self) -> [f32; 2] {
         self.get_2d_words().map(crate::to_f32)
     }
 
+    #[inline]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.get_pixel_2d_words().map(crate::to_f32)
     }

@@ -39,8 +39,10 @@
 //! The values are computed as the definition above says by
 //! [`ZSobolSampler::sample_index`], but the sampler's own calls take a
 //! cached path (`cache.rs`) that hashes per dimension key once and per
-//! pixel and key once, leaving `ceil(m / 2)` bit mixes and one scramble per
-//! value. Tests check both paths give the same bits.
+//! pixel and key once, leaving a table lookup of the four highest sample
+//! digits' permutation, a bit mix per lower sample digit (none for
+//! `spp <= 256`) and one scramble per value. Tests check both paths give
+//! the same bits.
 
 mod cache;
 
@@ -153,26 +155,15 @@ impl ZSobolSampler {
             seed,
             morton: 0,
             dimension: 0,
-            cache: Cache::new(&layout),
+            cache: Cache::new(layout),
         })
-    }
-
-    /// The constants of the cached path.
-    fn layout(&self) -> Layout {
-        Layout {
-            seed: self.seed,
-            strategy: self.strategy,
-            log2_spp: self.log2_spp,
-            base4_digits: self.base4_digits,
-        }
     }
 
     /// The scrambled words of Sobol dimensions `0..N` (`N` = 1 or 2) for
     /// dimension key `key`: the cached path, else the definition.
-    #[inline]
+    #[inline(always)]
     fn words<const N: usize>(&mut self, key: u64) -> [u32; N] {
-        let layout = self.layout();
-        match self.cache.words(&layout, key, self.morton) {
+        match self.cache.words(key, self.morton) {
             Some(words) => words,
             None => self.direct_words(key),
         }
@@ -180,6 +171,8 @@ impl ZSobolSampler {
 
     /// The scrambled words of Sobol dimensions `0..N` for `key`, computed
     /// from the definition ([`ZSobolSampler::sample_index`]).
+    #[cold]
+    #[inline(never)]
     fn direct_words<const N: usize>(&self, key: u64) -> [u32; N] {
         let index = self.sample_index(key);
         let seed = self.randomizer_seed(key, index >> 32);
@@ -232,6 +225,7 @@ impl WordSampler for ZSobolSampler {
         self.spp
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         let mask = ((1u64 << self.log2_res) - 1) as u32;
         let code = morton2(pixel[0] & mask, pixel[1] & mask);
@@ -239,17 +233,20 @@ impl WordSampler for ZSobolSampler {
         self.dimension = dimension;
     }
 
+    #[inline]
     fn get_1d_word(&mut self) -> u32 {
         let key = super::next_key(&mut self.dimension, 1);
         let [word] = self.words(key);
         word
     }
 
+    #[inline]
     fn get_2d_words(&mut self) -> [u32; 2] {
         let key = super::next_key(&mut self.dimension, 2);
         self.words(key)
     }
 
+    #[inline]
     fn get_pixel_2d_words(&mut self) -> [u32; 2] {
         self.words(PIXEL_KEY)
     }

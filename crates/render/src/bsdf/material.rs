@@ -25,7 +25,7 @@ use super::dielectric::{DielectricBxdf, ThinDielectricBxdf};
 use super::diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 use super::layered::LayeredBxdf;
 use super::{Bsdf, Bxdf, BxdfModel};
-use crate::math::{Point2, Point3, Vec3};
+use crate::math::{Frame, Point2, Point3, Vec3};
 use crate::spectrum::{Colour, Rgb};
 use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
 pub use mix::{MixMaterial, mix_choice};
@@ -192,6 +192,19 @@ impl Material {
     /// uplifted as [`Colour`]'s constructors say).
     pub fn bsdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bsdf<C> {
         Bsdf::new(ctx.ns, ctx.dpdus, self.bxdf_for(ctx, w))
+    }
+
+    /// [`Material::bsdf_for`] given its shading frame, `frame =
+    /// Frame::shading(ctx.ns, ctx.dpdus)` (which a caller may keep per
+    /// triangle, see [`crate::accel::Hit::shading`]).
+    #[inline]
+    pub fn bsdf_in_frame<C: Colour>(
+        &self,
+        frame: Frame,
+        ctx: &BsdfContext,
+        w: &C::Wavelengths,
+    ) -> Bsdf<C> {
+        Bsdf::with_frame(frame, self.bxdf_for(ctx, w))
     }
 
     /// The local-frame BxDF at a shading point (textures evaluated there).

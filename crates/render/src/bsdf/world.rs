@@ -18,13 +18,10 @@ impl<C: Colour> Bsdf<C> {
     /// A BSDF with shading normal `ns` (need not be unit) and tangent
     /// `dpdus` (projected onto the tangent plane; any vector if unknown).
     pub fn new(ns: Vec3, dpdus: Vec3, bxdf: Bxdf<C>) -> Bsdf<C> {
-        let n = ns.normalize();
-        let frame = if n.is_finite() {
-            Frame::from_zx(n, dpdus)
-        } else {
-            Frame::from_z(Vec3::Z)
-        };
-        Bsdf { bxdf, frame }
+        Bsdf {
+            bxdf,
+            frame: Frame::shading(ns, dpdus),
+        }
     }
     /// A BSDF in an explicit frame.
     pub fn with_frame(frame: Frame, bxdf: Bxdf<C>) -> Bsdf<C> {

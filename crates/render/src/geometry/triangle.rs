@@ -2,11 +2,14 @@
 //! (Möller-Trumbore, one triangle or a [`Tri4`] packet of four at once),
 //! surface-hit construction and uniform area sampling.
 
+mod packet;
+
+pub use packet::{Hits4, Tri4};
+
 use super::{PrimHit, ShapeSample, SurfaceHit};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_triangle;
 use crate::math::{Bounds3, Frame, Normal3, Point2, Point3, Ray, Transform, Vec3};
-use wide::{CmpGe, CmpGt, CmpLe, CmpLt, CmpNe, f32x4};
 
 /// A triangle mesh with vertices already in world space (as pbrt does, the
 /// object-to-world transform is applied once at construction).
@@ -171,32 +174,51 @@ impl TriangleMesh {
     /// Full surface information for a hit `h` on triangle `i` found by
     /// [`TriangleMesh::intersect`].
     pub fn surface_hit(&self, i: usize, h: &PrimHit) -> SurfaceHit {
-        self.surface_hit_at(i, h, self.vertices(i))
+        self.surface_hit_at(i, h, self.vertices(i), None)
+    }
+
+    /// The normal and tangent of triangle `i` (vertices `p` as returned by
+    /// [`TriangleMesh::vertices`]) when they are the same at every point of
+    /// it, i.e. when the mesh has no shading normals; `None` otherwise.
+    /// Computed as [`TriangleMesh::surface_hit`] computes them, so a caller
+    /// may keep them per triangle and pass them to
+    /// [`TriangleMesh::surface_hit_at`] with the same result.
+    pub fn flat_frame(&self, i: usize, p: [Point3; 3]) -> Option<FlatFrame> {
+        if self.normals.is_some() {
+            return None;
+        }
+        let ng = self.oriented_normal(face_normal(p), None);
+        let dpdu = tangent(self.uv_of(i), p, ng);
+        Some(FlatFrame {
+            ng,
+            dpdu,
+            shading: Frame::shading(ng, dpdu),
+        })
     }
 
     /// [`TriangleMesh::surface_hit`] given the triangle's vertices (as
-    /// returned by [`TriangleMesh::vertices`]), saving their lookup.
+    /// returned by [`TriangleMesh::vertices`]) and, if the caller keeps it,
+    /// its [`TriangleMesh::flat_frame`], saving their computation.
     #[inline]
-    pub fn surface_hit_at(&self, i: usize, h: &PrimHit, [p0, p1, p2]: [Point3; 3]) -> SurfaceHit {
+    pub fn surface_hit_at(
+        &self,
+        i: usize,
+        h: &PrimHit,
+        [p0, p1, p2]: [Point3; 3],
+        frame: Option<FlatFrame>,
+    ) -> SurfaceHit {
         let b = [1.0 - h.u - h.v, h.u, h.v];
         let p = p0 * b[0] + p1 * b[1] + p2 * b[2];
         let uv = self.uv_of(i);
         let uv_hit = uv[0] * b[0] + uv[1] * b[1] + uv[2] * b[2];
-        let face = (p0 - p2).cross(p1 - p2).normalize();
-        let ns = self.shading_normal(i, b);
-        let ng = self.oriented_normal(face, ns);
-        // dp/du from the uv parameterisation; fall back to any tangent.
-        let (du02, du12) = (uv[0] - uv[2], uv[1] - uv[2]);
-        let (dp02, dp12) = (p0 - p2, p1 - p2);
-        let det = du02.x * du12.y - du02.y * du12.x;
-        let mut dpdu = if det.abs() > 1e-9 {
-            (dp02 * du12.y - dp12 * du02.y) / det
-        } else {
-            Vec3::ZERO
+        let (ng, ns, dpdu) = match frame {
+            Some(f) => (f.ng, None, f.dpdu),
+            None => {
+                let ns = self.shading_normal(i, b);
+                let ng = self.oriented_normal(face_normal([p0, p1, p2]), ns);
+                (ng, ns, tangent(uv, [p0, p1, p2], ng))
+            }
         };
-        if !(dpdu.cross(ng).length_squared() > 0.0) || !dpdu.is_finite() {
-            dpdu = Frame::from_z(ng).x;
-        }
         SurfaceHit {
             t: h.t,
             p,
@@ -217,8 +239,7 @@ impl TriangleMesh {
         let b = sample_uniform_triangle(u);
         let [p0, p1, p2] = self.vertices(i);
         let p = p0 * b[0] + p1 * b[1] + p2 * b[2];
-        let face = (p0 - p2).cross(p1 - p2).normalize();
-        let n = self.oriented_normal(face, self.shading_normal(i, b));
+        let n = self.oriented_normal(face_normal([p0, p1, p2]), self.shading_normal(i, b));
         let uv = self.uv_of(i);
         let uv = uv[0] * b[0] + uv[1] * b[1] + uv[2] * b[2];
         Some(ShapeSample {
@@ -227,6 +248,44 @@ impl TriangleMesh {
             uv,
             pdf: 1.0 / area,
         })
+    }
+}
+
+/// The parts of a triangle's [`SurfaceHit`] that do not depend on the hit
+/// point when its mesh has no shading normals (see
+/// [`TriangleMesh::flat_frame`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlatFrame {
+    /// The oriented unit geometric normal (also the shading normal).
+    pub ng: Normal3,
+    /// The tangent `∂p/∂u`.
+    pub dpdu: Vec3,
+    /// The BSDF's shading frame there, `Frame::shading(ng, dpdu)`.
+    pub shading: Frame,
+}
+
+/// The unit face normal `(p0 - p2) × (p1 - p2)`, not yet oriented.
+#[inline]
+fn face_normal([p0, p1, p2]: [Point3; 3]) -> Normal3 {
+    (p0 - p2).cross(p1 - p2).normalize()
+}
+
+/// `∂p/∂u` from the uv parameterisation `uv` of the vertices `p`; any
+/// tangent of the plane of `ng` when that is degenerate.
+#[inline]
+fn tangent(uv: [Point2; 3], [p0, p1, p2]: [Point3; 3], ng: Normal3) -> Vec3 {
+    let (du02, du12) = (uv[0] - uv[2], uv[1] - uv[2]);
+    let (dp02, dp12) = (p0 - p2, p1 - p2);
+    let det = du02.x * du12.y - du02.y * du12.x;
+    let dpdu = if det.abs() > 1e-9 {
+        (dp02 * du12.y - dp12 * du02.y) / det
+    } else {
+        Vec3::ZERO
+    };
+    if !(dpdu.cross(ng).length_squared() > 0.0) || !dpdu.is_finite() {
+        Frame::from_z(ng).x
+    } else {
+        dpdu
     }
 }
 
@@ -259,97 +318,4 @@ pub fn intersect_triangle(ray: &Ray, t_max: f32, [p0, p1, p2]: [Point3; 3]) -> O
     } else {
         None
     }
-}
-
-/// Four triangles' vertices in structure-of-arrays form, `p[vertex][axis][lane]`,
-/// for [`Tri4::intersect`]. Unused lanes hold degenerate (all-zero)
-/// triangles, which never hit.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-#[repr(C, align(16))]
-pub struct Tri4 {
-    /// `p[vertex][axis][lane]`.
-    pub p: [[[f32; 4]; 3]; 3],
-}
-
-/// Per-lane results of [`Tri4::intersect`]: `mask` bit `l` is set when lane
-/// `l` is hit; then `t[l]`, `u[l]`, `v[l]` are as in [`PrimHit`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hits4 {
-    /// Hit distances.
-    pub t: [f32; 4],
-    /// Barycentric weights of the second vertex.
-    pub u: [f32; 4],
-    /// Barycentric weights of the third vertex.
-    pub v: [f32; 4],
-    /// Lanes hit.
-    pub mask: u32,
-}
-
-impl Tri4 {
-    /// Stores triangle `tri` in `lane`.
-    pub fn set(&mut self, lane: usize, tri: [Point3; 3]) {
-        for (pv, q) in self.p.iter_mut().zip(tri) {
-            [pv[0][lane], pv[1][lane], pv[2][lane]] = [q.x, q.y, q.z];
-        }
-    }
-
-    /// The triangle in `lane`.
-    #[inline]
-    pub fn get(&self, lane: usize) -> [Point3; 3] {
-        self.p
-            .map(|pv| Point3::new(pv[0][lane], pv[1][lane], pv[2][lane]))
-    }
-
-    /// [`intersect_triangle`] on all four lanes at once, one `wide::f32x4`
-    /// register per coordinate, with the same arithmetic in the same order
-    /// per lane (no fused multiply-adds), so the results are bit-identical
-    /// to it.
-    #[inline(always)]
-    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Hits4 {
-        let splat = |v: Vec3| [v.x, v.y, v.z].map(f32x4::splat);
-        let (o, d) = (splat(ray.o), splat(ray.d));
-        let [p0, p1, p2] = self.p.map(|pv| pv.map(f32x4::from));
-        let sub = |a: [f32x4; 3], b: [f32x4; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-        let e1 = sub(p1, p0);
-        let e2 = sub(p2, p0);
-        let pvec = cross4(d, e2);
-        let det = dot4(e1, pvec);
-        let inv = f32x4::ONE / det;
-        let tvec = sub(o, p0);
-        let u = dot4(tvec, pvec) * inv;
-        let qvec = cross4(tvec, e1);
-        let v = dot4(d, qvec) * inv;
-        let t = dot4(e2, qvec) * inv;
-        let zero = f32x4::ZERO;
-        let hit = det.cmp_ne(zero)
-            & det.abs().cmp_lt(f32x4::splat(f32::INFINITY))
-            & u.cmp_ge(zero)
-            & u.cmp_le(f32x4::ONE)
-            & v.cmp_ge(zero)
-            & (u + v).cmp_le(f32x4::ONE)
-            & t.cmp_gt(zero)
-            & t.cmp_lt(f32x4::splat(t_max));
-        Hits4 {
-            t: t.to_array(),
-            u: u.to_array(),
-            v: v.to_array(),
-            mask: hit.move_mask() as u32,
-        }
-    }
-}
-
-/// [`Vec3::cross`] per lane, in its operation order.
-#[inline(always)]
-fn cross4(a: [f32x4; 3], b: [f32x4; 3]) -> [f32x4; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// [`Vec3::dot`] per lane, in its operation order.
-#[inline(always)]
-fn dot4(a: [f32x4; 3], b: [f32x4; 3]) -> f32x4 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }

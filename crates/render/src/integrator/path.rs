@@ -113,17 +113,18 @@ impl PathIntegrator {
             depth += 1;
             let u = VertexSamples::draw(sampler);
             let material = &scene.materials()[sh.material as usize];
-            let bsdf = material.bsdf_for::<C>(
-                &BsdfContext {
-                    ns: surf.ns,
-                    dpdus: surf.dpdu,
-                    seed: bsdf_seed,
-                    p: surf.p,
-                    uv: surf.uv,
-                    wo,
-                },
-                w,
-            );
+            let bsdf_ctx = BsdfContext {
+                ns: surf.ns,
+                dpdus: surf.dpdu,
+                seed: bsdf_seed,
+                p: surf.p,
+                uv: surf.uv,
+                wo,
+            };
+            let bsdf = match sh.hit.shading {
+                Some(frame) => material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w),
+                None => material.bsdf_for::<C>(&bsdf_ctx, w),
+            };
             let flags = bsdf.flags();
             let ctx = LightSampleContext::new(surf.p, surf.ng, surf.ns);
             if flags.is_non_specular() && self.strategy != LightStrategy::BsdfOnly {

@@ -71,9 +71,14 @@ impl AreaShape {
 
     /// A point uniformly distributed by area.
     pub fn sample(&self, u: Point2) -> Option<ShapeSample> {
+        self.sample_with_area(u, self.area())
+    }
+
+    /// [`AreaShape::sample`] given `area = self.area()` (a light keeps it).
+    #[inline]
+    fn sample_with_area(&self, u: Point2, area: f32) -> Option<ShapeSample> {
         match self {
             AreaShape::Triangle { p, n } => {
-                let area = self.area();
                 if !(area > 0.0) {
                     return None;
                 }
@@ -195,7 +200,7 @@ impl DiffuseAreaLight {
         let solid_angle = cone.is_some();
         let ss = match cone {
             Some(ss) => ss,
-            None => self.shape.sample(u)?,
+            None => self.shape.sample_with_area(u, self.area)?,
         };
         let d = ss.p - ctx.p;
         let d2 = d.length_squared();

@@ -25,6 +25,19 @@ impl Frame {
         let y = Vec3::new(b, sign + n.y * n.y * a, -n.y);
         Frame { x, y, z: n }
     }
+    /// The shading frame of a surface point with shading normal `ns` (need
+    /// not be unit) and tangent `dpdus` (pbrt-v4's `BSDF` constructor): `z`
+    /// is `ns` normalised and `x` follows `dpdus` ([`Frame::from_zx`]); the
+    /// `+z` frame when `ns` does not normalise.
+    #[inline]
+    pub fn shading(ns: Vec3, dpdus: Vec3) -> Frame {
+        let n = ns.normalize();
+        if n.is_finite() {
+            Frame::from_zx(n, dpdus)
+        } else {
+            Frame::from_z(Vec3::Z)
+        }
+    }
     /// A frame with `z = n` (unit) and `x` the part of `t` orthogonal to `n`;
     /// falls back to [`Frame::from_z`] when `t` is (nearly) parallel to `n`.
     pub fn from_zx(n: Vec3, t: Vec3) -> Frame {

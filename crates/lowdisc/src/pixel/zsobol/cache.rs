@@ -15,11 +15,16 @@
 //!   after another, so this is computed once per pixel and key.
 //!   The permutations of the four highest sample digits are chosen by
 //!   hashes of the pixel digits and at most three sample digits, so the
-//!   1 + 4 + 16 + 64 of them are kept too, as is the scramble key of each
-//!   randomizer seed.
-//! * **Per value**: the sample digits below those four (one bit mix each;
-//!   none for `m <= 9`), the odd low bit's flip, a table lookup of the Sobol
-//!   words of the low bits and the scramble.
+//!   1 + 4 + 16 + 64 of them are applied once, level by level, into a table
+//!   of the permuted value of those digits for each of their (at most 256)
+//!   values; the scramble key of each randomizer seed is kept too.
+//! * **Per value**: one lookup in that table, the sample digits below those
+//!   four (one bit mix each; none for `m <= 9`), the odd low bit's flip, a
+//!   table lookup of the Sobol words of the low bits and the scramble.
+//!   With no sample digits below the table's (`m` even, at most 8: `spp`
+//!   1, 4, 16, 64 or 256) and the fast Owen scramble, that path makes no
+//!   call, so it inlines into the caller; refreshes, hashed digits and the
+//!   other scrambles are out of line.
 //!
 //! Keys `0..CACHED_KEYS` and the pixel key are cached; any other key takes
 //! the direct path.
@@ -30,7 +35,7 @@ use super::{BASE4_PERMUTATIONS, LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
 use crate::hash::{bounded, hash_words, mix64};
 use crate::pixel::SEED_PAD;
-use crate::scramble::dimension_seed;
+use crate::scramble::{dimension_seed, fast_owen_scramble_reversed};
 use crate::sobol::sample;
 
 /// Dimension keys below this are cached (slot `1 + key`; slot 0 is the
@@ -64,11 +69,9 @@ struct Entry {
     /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel
     /// digits, bit-reversed (see `Cache::lower_words`).
     upper_words: [u32; 2],
-    /// Packed permutations (see [`PACKED_PERMUTATIONS`]) of the
-    /// [`TREE_DIGITS`] highest sample digits (when they exist): that of the
-    /// `j`-th from the top after the digits above it read `v` (a `j`-digit
-    /// base-4 number) is entry `tree_slot(j, v)`.
-    tree: [u8; TREE_LEN],
+    /// The permuted value of the [`TOP_DIGITS`] (or fewer, see
+    /// [`top_digits`]) highest sample digits, indexed by their value.
+    top: [u8; TOP_LEN],
     /// Whether `keys` is computed (for `high`).
     seeded: bool,
     /// Index bits above 31 the keys are for.
@@ -81,6 +84,15 @@ struct Entry {
 /// The caches of one sampler (see the module documentation).
 #[derive(Debug, Clone)]
 pub(super) struct Cache {
+    layout: Layout,
+    /// Index bits below the top sample digits ([`Entry::top`]).
+    below: u32,
+    /// Mask of the top sample digits' value (after shifting by `below`).
+    top_mask: u64,
+    /// Whether [`Cache::words`] may take its shortest path: no sample bits
+    /// below the top digits (`m` even, at most 8), the low-bit words
+    /// tabled and the fast Owen scramble.
+    short: bool,
     entries: Vec<Entry>,
     /// `levels[slot * base4_digits + i]`: the level hash of digit `i`.
     levels: Vec<u64>,
@@ -92,13 +104,21 @@ pub(super) struct Cache {
 
 impl Cache {
     /// An empty cache for `layout`; tables the low-bit words when `m` is small.
-    pub(super) fn new(layout: &Layout) -> Self {
+    pub(super) fn new(layout: Layout) -> Self {
         let lower_words = if layout.log2_spp <= LOWER_TABLE_BITS {
             (0..1u32 << layout.log2_spp).map(reversed_words).collect()
         } else {
             Vec::new()
         };
+        let t = top_digits(layout.log2_spp);
+        let below = layout.log2_spp - 2 * t;
         Cache {
+            layout,
+            below,
+            top_mask: (1 << (2 * t)) - 1,
+            short: below == 0
+                && !lower_words.is_empty()
+                && layout.strategy == RandomizeStrategy::FastOwen,
             entries: Vec::new(),
             levels: Vec::new(),
             lower_words,
@@ -108,13 +128,8 @@ impl Cache {
     /// The `N` (1 or 2) scrambled words of Sobol dimensions `0..N` for
     /// dimension key `key` at Morton index `morton`, or `None` if `key` is
     /// not cached.
-    #[inline]
-    pub(super) fn words<const N: usize>(
-        &mut self,
-        layout: &Layout,
-        key: u64,
-        morton: u64,
-    ) -> Option<[u32; N]> {
+    #[inline(always)]
+    pub(super) fn words<const N: usize>(&mut self, key: u64, morton: u64) -> Option<[u32; N]> {
         let slot = if key == PIXEL_KEY {
             0
         } else if key < CACHED_KEYS {
@@ -122,32 +137,90 @@ impl Cache {
         } else {
             return None;
         };
-        if slot >= self.entries.len() {
-            self.grow(layout, slot);
+        let code = morton >> self.layout.log2_spp;
+        if self.short
+            && let Some(entry) = self.entries.get(slot)
+            && entry.valid
+            && entry.code == code
+        {
+            // A lookup and the scramble, without a call (the common case).
+            let lower = entry.top[(morton & self.top_mask) as usize & (TOP_LEN - 1)];
+            let lower_words = self.lower_words[usize::from(lower)];
+            return Some(core::array::from_fn(|d| {
+                fast_owen_scramble_reversed(entry.upper_words[d] ^ lower_words[d], entry.keys[d])
+            }));
         }
-        let digits = layout.base4_digits as usize;
-        let levels = &self.levels[slot * digits..(slot + 1) * digits];
-        let entry = &mut self.entries[slot];
-        let m = layout.log2_spp;
-        let code = morton >> m;
-        if !entry.valid || entry.code != code {
-            refresh(entry, levels, layout, key, code);
+        Some(self.words_general(slot, key, morton))
+    }
+
+    /// [`Cache::words`] of a cached `slot` in general: refreshes the slot
+    /// for the pixel if needed, hashes the sample digits below the top
+    /// ones and applies any strategy.
+    #[inline(never)]
+    fn words_general<const N: usize>(&mut self, slot: usize, key: u64, morton: u64) -> [u32; N] {
+        let code = morton >> self.layout.log2_spp;
+        match self.entries.get(slot) {
+            Some(entry) if entry.valid && entry.code == code => {}
+            _ => self.refresh(slot, key, code),
         }
-        let lower = lower_digits(entry, levels, m, morton);
+        let entry = &self.entries[slot];
+        let below = self.below;
+        let top = (morton >> below) & self.top_mask;
+        let mut lower = u64::from(entry.top[top as usize & (TOP_LEN - 1)]) << below;
+        if below != 0 {
+            lower |= self.below_top(slot, morton);
+        }
         let lower_words = match self.lower_words.get(lower as usize) {
             Some(&w) => w,
             None => reversed_words(lower as u32),
         };
         let entry = &self.entries[slot];
-        Some(core::array::from_fn(|d| {
+        core::array::from_fn(|d| {
             let reversed = entry.upper_words[d] ^ lower_words[d];
-            layout.strategy.apply_key_reversed(reversed, entry.keys[d])
-        }))
+            self.layout
+                .strategy
+                .apply_key_reversed(reversed, entry.keys[d])
+        })
+    }
+
+    /// The permuted index bits below the top sample digits of slot `slot`:
+    /// the sample digits under them (one bit mix each) and the odd low bit.
+    #[inline(never)]
+    fn below_top(&self, slot: usize, morton: u64) -> u64 {
+        let m = self.layout.log2_spp;
+        let odd = m & 1;
+        let digits = self.layout.base4_digits as usize;
+        let levels = &self.levels[slot * digits..(slot + 1) * digits];
+        let entry = &self.entries[slot];
+        let mut lower = 0;
+        // The digits below the top ones (index `i` at shift `2i - odd`).
+        let rest = m / 2 - top_digits(m) + odd;
+        for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
+            lower |= permuted_digit(level, morton, 2 * i - odd);
+        }
+        if odd == 1 {
+            let flip = mix64(entry.low_key ^ (morton >> 1)) >> 63;
+            lower |= (morton & 1) ^ flip;
+        }
+        lower
+    }
+
+    /// Recomputes the pixel part of slot `slot` (adding the slots up to it
+    /// first) for the pixel with Morton code `code`.
+    #[inline(never)]
+    fn refresh(&mut self, slot: usize, key: u64, code: u64) {
+        if slot >= self.entries.len() {
+            self.grow(slot);
+        }
+        let digits = self.layout.base4_digits as usize;
+        let levels = &self.levels[slot * digits..(slot + 1) * digits];
+        refresh(&mut self.entries[slot], levels, &self.layout, key, code);
     }
 
     /// Adds the entries of every slot up to `slot`.
     #[cold]
-    fn grow(&mut self, layout: &Layout, slot: usize) {
+    fn grow(&mut self, slot: usize) {
+        let layout = self.layout;
         for s in self.entries.len()..=slot {
             let key = if s == 0 { PIXEL_KEY } else { s as u64 - 1 };
             let dim_seed = hash_words(&[layout.seed, SEED_PAD, key]);
@@ -158,7 +231,7 @@ impl Cache {
                 valid: false,
                 code: 0,
                 upper_words: [0; 2],
-                tree: [0; TREE_LEN],
+                top: [0; TOP_LEN],
                 seeded: false,
                 high: 0,
                 keys: [0; 2],
@@ -192,11 +265,32 @@ const PACKED_PERMUTATIONS: [u8; 24] = {
     out
 };
 
+/// [`BASE4_PERMUTATIONS`] as four bytes, image of digit `d` in byte `d`
+/// (little-endian): a digit's permuted images appended to a prefix `q`
+/// are `SPREAD_PERMUTATIONS[p] | q * 0x0101_0101`.
+const SPREAD_PERMUTATIONS: [u32; 24] = {
+    let mut out = [0u32; 24];
+    let mut p = 0;
+    while p < 24 {
+        let q = BASE4_PERMUTATIONS[p];
+        out[p] = u32::from_le_bytes(q);
+        p += 1;
+    }
+    out
+};
+
+/// The index (into [`BASE4_PERMUTATIONS`]) of the permutation chosen for a
+/// digit with level hash `level` and higher digits `higher`.
+#[inline(always)]
+fn permutation_index(level: u64, higher: u64) -> usize {
+    bounded(mix64(level ^ higher), 24) as usize
+}
+
 /// The packed permutation chosen for a digit with level hash `level` and
 /// higher digits `higher`.
 #[inline(always)]
 fn packed_permutation(level: u64, higher: u64) -> u8 {
-    PACKED_PERMUTATIONS[bounded(mix64(level ^ higher), 24) as usize]
+    PACKED_PERMUTATIONS[permutation_index(level, higher)]
 }
 
 /// Applies a packed permutation to the digit of `morton` at `shift`.
@@ -224,14 +318,19 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
         upper |= permuted_digit(level, morton, 2 * i - odd);
     }
     entry.upper_words = reversed_words(upper as u32);
-    // The highest sample digits: the `j`-th from the top is digit
-    // `top - 1 - j` at shift `m - 2 - 2j`.
+    // The highest sample digits, level by level: the `j`-th from the top
+    // is digit `top - 1 - j`; its permutation is chosen by the pixel code
+    // and the `j` digits above it (value `v`). Each pass extends the
+    // permuted prefixes of `j` digits (`entry.top[v]`) by one digit, in
+    // place from the end (entry `4v + d` is written after `v` is read).
     let top = m.div_ceil(2) as usize;
-    for j in 0..tree_digits(m) {
-        for v in 0..1u64 << (2 * j) {
-            let permutation =
-                packed_permutation(levels[top - 1 - j as usize], (code << (2 * j)) | v);
-            entry.tree[tree_slot(j, v)] = permutation;
+    entry.top[0] = 0;
+    for j in 0..top_digits(m) {
+        let level = levels[top - 1 - j as usize];
+        for v in (0..1usize << (2 * j)).rev() {
+            let p = permutation_index(level, (code << (2 * j)) | v as u64);
+            let prefixed = SPREAD_PERMUTATIONS[p] | (u32::from(entry.top[v] << 2) * 0x0101_0101);
+            entry.top[4 * v..4 * v + 4].copy_from_slice(&prefixed.to_le_bytes());
         }
     }
     let high = upper >> 32;
@@ -245,48 +344,13 @@ fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u
     entry.valid = true;
 }
 
-/// Sample digits whose permutations [`Entry::tree`] keeps (at most).
-const TREE_DIGITS: u32 = 4;
-/// Entries of [`Entry::tree`]: `4^0 + 4^1 + ... + 4^(TREE_DIGITS - 1)`.
-const TREE_LEN: usize = ((1 << (2 * TREE_DIGITS)) - 1) / 3;
+/// Sample digits (at most) that [`Entry::top`] permutes by lookup.
+const TOP_DIGITS: u32 = 4;
+/// Entries of [`Entry::top`]: `4^TOP_DIGITS`.
+const TOP_LEN: usize = 1 << (2 * TOP_DIGITS);
 
-/// Sample digits in the tree for `m` sample bits.
+/// Sample digits in [`Entry::top`] for `m` sample bits.
 #[inline(always)]
-fn tree_digits(m: u32) -> u32 {
-    (m / 2).min(TREE_DIGITS)
-}
-
-/// The tree entry of the `j`-th sample digit from the top after the
-/// digits above it read `above`.
-#[inline(always)]
-fn tree_slot(j: u32, above: u64) -> usize {
-    ((1usize << (2 * j)) - 1) / 3 + above as usize
-}
-
-/// The permuted index bits below `m` (the sample digits and the odd low bit).
-#[inline(always)]
-fn lower_digits(entry: &Entry, levels: &[u64], m: u32, morton: u64) -> u64 {
-    let odd = m & 1;
-    let sample_digits = m / 2;
-    let mut lower = 0u64;
-    let tree = tree_digits(m);
-    // Top down through the tree, a complete 4-ary heap: the node after
-    // digit `d` at node `k` is `4k + 1 + d` (`tree_slot` in closed form).
-    let (mut node, mut shift) = (0, m);
-    for _ in 0..tree {
-        shift -= 2;
-        let digit = (morton >> shift) & 3;
-        lower |= u64::from((entry.tree[node] >> (2 * digit)) & 3) << shift;
-        node = 4 * node + 1 + digit as usize;
-    }
-    // The digits below the tree's (index `i` at shift `2i - odd`).
-    let rest = sample_digits - tree + odd;
-    for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
-        lower |= permuted_digit(level, morton, 2 * i - odd);
-    }
-    if odd == 1 {
-        let flip = mix64(entry.low_key ^ (morton >> 1)) >> 63;
-        lower |= (morton & 1) ^ flip;
-    }
-    lower
+fn top_digits(m: u32) -> u32 {
+    (m / 2).min(TOP_DIGITS)
 }
