@@ -30,6 +30,7 @@ pub trait PixelSampler {
 }
 
 mod burley;
+mod cascaded_sobol;
 mod global_sobol;
 mod halton;
 mod independent;
@@ -45,6 +46,7 @@ pub use burley::{
     BurleySampler, NestedHash, PixelXorSampler, burley_word, laine_karras_scramble_reversed,
     seed_hash,
 };
+pub use cascaded_sobol::CascadedSobolSampler;
 pub use global_sobol::{GlobalSobolMode, GlobalSobolSampler};
 pub use halton::HaltonSampler;
 pub use independent::IndependentSampler;
