@@ -73,6 +73,8 @@ use crate::{Error, RandomizeStrategy};
 
 /// Positions per chain before it restarts from the sample index.
 pub const CHAIN_LENGTH: u64 = 256;
+/// Positions whose scramble keys are kept while the pixel stays the same.
+const KEYED_POSITIONS: usize = 64;
 
 /// The unscrambled word at chain position `position` for index `index`:
 /// van der Corput at a chain's start, Sobol dimension 1 after.
@@ -109,6 +111,11 @@ pub struct CascadedSobolSampler {
     /// The current pixel and its scramble seed.
     pixel: Option<[u32; 2]>,
     pixel_seed: u64,
+    /// Scramble keys of positions `0..KEYED_POSITIONS` in this pixel
+    /// (bit `c` of `known` set when `keys[c]` is computed): the samples of
+    /// a pixel share them, and a renderer visits them one after another.
+    keys: [u32; KEYED_POSITIONS],
+    known: u64,
     /// The current sample's index in its pixel.
     sample: u32,
     /// The next chain position to compute and its index.
@@ -138,6 +145,8 @@ impl CascadedSobolSampler {
             seed,
             pixel: None,
             pixel_seed: 0,
+            keys: [0; KEYED_POSITIONS],
+            known: 0,
             sample: 0,
             position: 0,
             index: 0,
@@ -160,15 +169,32 @@ impl CascadedSobolSampler {
                 self.index = self.sample;
             }
             let word = cascade_word(c, self.index);
-            let scrambled = self
-                .strategy
-                .apply_dimension_seed(word, dimension_seed(self.pixel_seed, c as u32));
+            let key = self.scramble_key(c);
+            let scrambled = self.strategy.apply_key_reversed(word.reverse_bits(), key);
             self.index = next_index(scrambled, self.bits);
             self.position = c + 1;
             if c == position {
                 return scrambled;
             }
         }
+    }
+}
+
+impl CascadedSobolSampler {
+    /// The scramble key of position `c` in the current pixel:
+    /// `strategy.scramble_key(dimension_seed(pixel_seed, c))`, kept for
+    /// the first positions.
+    #[inline]
+    fn scramble_key(&mut self, c: u64) -> u32 {
+        let compute = |s: &Self| (s.strategy).scramble_key(dimension_seed(s.pixel_seed, c as u32));
+        let Some(slot) = usize::try_from(c).ok().filter(|&c| c < KEYED_POSITIONS) else {
+            return compute(self);
+        };
+        if self.known & (1 << slot) == 0 {
+            self.keys[slot] = compute(self);
+            self.known |= 1 << slot;
+        }
+        self.keys[slot]
     }
 }
 
@@ -182,6 +208,7 @@ impl WordSampler for CascadedSobolSampler {
             let [x, y] = pixel.map(u64::from);
             self.pixel_seed = hash_words(&[self.seed, x, y]);
             self.pixel = Some(pixel);
+            self.known = 0;
         }
         self.sample = sample_index % self.spp;
         self.position = 0;

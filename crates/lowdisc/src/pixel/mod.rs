@@ -32,6 +32,7 @@ pub trait PixelSampler {
 mod burley;
 mod cascaded_sobol;
 mod global_sobol;
+mod group_cache;
 mod halton;
 mod independent;
 mod padded_sobol;
