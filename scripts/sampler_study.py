@@ -24,9 +24,12 @@ script needs only the Python standard library.
 The Z-order runs (`--runs zorder-direct,zorder-gi,zorder-cornell`) compare
 the Z-order candidates against `zsobol`, `sobol` and `independent` (issue
 11's goal) on the direct preset, the GI preset at 64x64 and the Bitterli
-Cornell box, and print each candidate's masked, blurred and FLIP ratios.
+Cornell box (and `zorder-bmw`, bmw-m6 under an environment map), and print
+each candidate's masked, blurred and FLIP ratios; `--candidates` runs a
+subset of the candidates (Z-order variants and `cascaded-sobol`).
 
-Usage: scripts/sampler_study.py [--lowdisc BIN] [--out DIR] [--runs LIST] [--tables-only]
+Usage: scripts/sampler_study.py [--lowdisc BIN] [--out DIR] [--runs LIST]
+       [--candidates LIST] [--tables-only]
 """
 
 import argparse
@@ -70,17 +73,17 @@ ZORDER = {
                     str(SHARED / "envmaps" / "polyhaven-kiara_1_dawn_1k.hdr")], "96x68", 16, 1024),
 }
 ZORDER_BASELINES = ["independent", "sobol", "zsobol"]
-ZORDER_CANDIDATES = ["zsobol-4d", "zorder-sz"]
+ZORDER_CANDIDATES = ["zsobol-4d", "zorder-sz", "cascaded-sobol"]
 # Issue 11's goal: masked MSE at most these multiples of each baseline.
 GOAL = {"zorder-direct": {"sobol": 0.80, "independent": 0.168}, "zorder-gi": {"zsobol": 0.90},
         "zorder-cornell": {"zsobol": 0.90}, "zorder-bmw": {"zsobol": 0.90}}
 
 
-def run(lowdisc, out, name):
+def run(lowdisc, out, name, candidates):
     if name in ZORDER:
         scene, res, runs, ref_spp = ZORDER[name]
         cmd = [lowdisc, "experiment", *scene, "--samplers",
-               ",".join(ZORDER_BASELINES + ZORDER_CANDIDATES), "--res", res, "--runs", str(runs),
+               ",".join(ZORDER_BASELINES + candidates), "--res", res, "--runs", str(runs),
                "--spp", str(SPP), "--ref-spp", str(ref_spp), "--conv-max", "1", "--conv-res", res,
                "--conv-ref-spp", str(ref_spp), "--out", str(out / name)]
         print("+", " ".join(cmd), file=sys.stderr)
@@ -221,7 +224,8 @@ def zorder_tables(path, name):
         "|---|---|---|---|---|---|---|---|",
     ]
     goal = GOAL.get(name, {})
-    for cand in ["zsobol"] + ZORDER_CANDIDATES:
+    candidates = [c for c in ZORDER_CANDIDATES if c in by]
+    for cand in ["zsobol"] + candidates:
         mean, se, _ = summary(column(by[cand], "masked_mse"), t)
         row, met = [f"`{cand}`", f"{mean:.4e} ± {se:.1e}"], []
         for base in ZORDER_BASELINES:
@@ -246,10 +250,18 @@ def main():
                    help="only print the tables of existing results.json files")
     p.add_argument("--runs", default="direct,gi,gi-64",
                    help="which of the study's runs: " + ", ".join([*SETTINGS, *ZORDER]))
+    p.add_argument("--candidates", default=",".join(ZORDER_CANDIDATES),
+                   help="the Z-order runs' candidates (the baselines always run; seeds are "
+                   "paired by run index, so a subset gives the same values): "
+                   + ", ".join(ZORDER_CANDIDATES))
     a = p.parse_args()
+    candidates = a.candidates.split(",")
+    unknown = sorted(set(candidates) - set(ZORDER_CANDIDATES))
+    if unknown:
+        raise SystemExit(f"unknown candidates: {', '.join(unknown)}")
     for name in a.runs.split(","):
         if not a.tables_only:
-            run(a.lowdisc, a.out, name)
+            run(a.lowdisc, a.out, name, candidates)
         table = zorder_tables if name in ZORDER else tables
         print(table(a.out / name / "results.json", name))
 

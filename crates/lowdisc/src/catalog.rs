@@ -27,6 +27,7 @@
 //! | `zsobol-4d` | Z-order Sobol, 4-D groups in Burley's order | pixel (0,0) of a 1x1 image |
 //! | `zsobol-joint` | Z-order Sobol, 4-D groups per path vertex | pixel (0,0) of a 1x1 image |
 //! | `zorder-sz` | Z-order base-4 (0,4)-sequence, film x light in 5-D | pixel (0,0) of a 1x1 image |
+//! | `cascaded-sobol` | Cascaded Sobol' per pixel (fast Owen), consecutive pairs (0,2) | pixel (0,0) of a 1x1 image |
 
 pub mod pixel_rows;
 mod points;
@@ -37,9 +38,9 @@ use core::str::FromStr;
 use crate::halton::HaltonRandomize;
 use crate::paper::check_threshold;
 use crate::pixel::{
-    BurleySampler, GlobalSobolMode, GlobalSobolSampler, GroupLayout, HaltonSampler,
-    IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler, Sampler,
-    StratifiedSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
+    BurleySampler, CascadedSobolSampler, GlobalSobolMode, GlobalSobolSampler, GroupLayout,
+    HaltonSampler, IndependentSampler, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler,
+    Sampler, StratifiedSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
@@ -101,11 +102,14 @@ pub enum SamplerName {
     /// `zorder-sz`: Z-order over the base-4 (0,4)-sequence of [`crate::sz`],
     /// film offset, light choice and light position jointly stratified.
     ZOrderSz,
+    /// `cascaded-sobol`: Cascaded Sobol' (Paulin et al. 2021) per pixel,
+    /// every consecutive pair of dimensions a (0,m,2)-net.
+    CascadedSobol,
 }
 
 impl SamplerName {
     /// Every name, in the order the documentation lists them.
-    pub const ALL: [SamplerName; 22] = [
+    pub const ALL: [SamplerName; 23] = [
         SamplerName::Independent,
         SamplerName::Stratified,
         SamplerName::Halton,
@@ -128,6 +132,7 @@ impl SamplerName {
         SamplerName::ZSobol4d,
         SamplerName::ZSobolJoint,
         SamplerName::ZOrderSz,
+        SamplerName::CascadedSobol,
     ];
 
     /// The name as written on the command line.
@@ -155,6 +160,7 @@ impl SamplerName {
             SamplerName::ZSobol4d => "zsobol-4d",
             SamplerName::ZSobolJoint => "zsobol-joint",
             SamplerName::ZOrderSz => "zorder-sz",
+            SamplerName::CascadedSobol => "cascaded-sobol",
         }
     }
 
@@ -190,6 +196,9 @@ impl SamplerName {
             }
             SamplerName::ZOrderSz => {
                 "Z-order base-4 (0,4)-sequence (SZ-style), film x light choice x light in 5-D"
+            }
+            SamplerName::CascadedSobol => {
+                "Cascaded Sobol' (Paulin et al. 2021) per pixel: consecutive dimension pairs (0,2)"
             }
         }
     }
@@ -358,6 +367,9 @@ impl SamplerConfig {
             }
             SamplerName::ZOrderSz => {
                 ZOrderSzSampler::new(spp, res, RandomizeStrategy::FastOwen, seed).map(Sampler::from)
+            }
+            SamplerName::CascadedSobol => {
+                CascadedSobolSampler::new(spp, RandomizeStrategy::FastOwen, seed).map(Sampler::from)
             }
         }
     }

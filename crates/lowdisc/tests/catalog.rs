@@ -25,7 +25,7 @@ fn names_round_trip_and_are_distinct() {
         assert!(!n.description().is_empty());
         assert!(names[..i].iter().all(|m| *m != names[i]));
     }
-    assert_eq!(names.len(), 22);
+    assert_eq!(names.len(), 23);
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
@@ -134,6 +134,10 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     (
         SamplerName::ZOrderSz,
         [0.8147841, 0.5291887, 0.69221556, 0.39676815, 0.8844348],
+    ),
+    (
+        SamplerName::CascadedSobol,
+        [0.08929324, 0.20743561, 0.3618505, 0.5417431, 0.2609762],
     ),
 ];
 

@@ -39,6 +39,7 @@ fn output_is_bit_identical_with_one_and_two_threads() {
         SamplerName::ZSobol,
         SamplerName::ZSobolJoint,
         SamplerName::ZOrderSz,
+        SamplerName::CascadedSobol,
         SamplerName::Paper,
         SamplerName::Independent,
         SamplerName::Halton,

@@ -14,14 +14,12 @@
 //!   offset = point index; `stratified`: `stratified::jittered_points` over
 //!   dimensions `0..end`, sliced to the range.
 //! * `padded-sobol`, `padded-sobol-lms`, `zsobol`, `sobol-burley`,
-//!   `laine-karras`, `sobol-pixel-xor`, `pmj02` and `pmj02bn` are pixel
-//!   samplers: their points are the `n`
-//!   `laine-karras`, `sobol-pixel-xor`, `zsobol-4d`, `zsobol-joint` and `zorder-sz` are
-//!   pixel samplers: their points are the `n`
-//!   samples of pixel (0,0) of a 1x1 image with `spp = n`: dimensions 0-1 are
-//!   the in-pixel offset, dimensions `2j + 2, 2j + 3` the `get_2d` pair at
-//!   sampler dimension `2j` (so a dimension's value does not depend on the
-//!   range asked for).
+//!   `laine-karras`, `sobol-pixel-xor`, `pmj02`, `pmj02bn`, `zsobol-4d`,
+//!   `zsobol-joint`, `zorder-sz` and `cascaded-sobol` are pixel samplers:
+//!   their points are the `n` samples of pixel (0,0) of a 1x1 image with
+//!   `spp = n`: dimensions 0-1 are the in-pixel offset, dimensions
+//!   `2j + 2, 2j + 3` the `get_2d` pair at sampler dimension `2j` (so a
+//!   dimension's value does not depend on the range asked for).
 //!
 //! Only the Sobol family uses the order; the others ignore it.
 
@@ -33,8 +31,8 @@ use crate::halton::{self, Halton, HaltonRandomize};
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::pixel::{
-    BurleySampler, GroupLayout, NestedHash, PaddedSobolSampler, PixelXorSampler, PmjSampler,
-    WordSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
+    BurleySampler, CascadedSobolSampler, GroupLayout, NestedHash, PaddedSobolSampler,
+    PixelXorSampler, PmjSampler, WordSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
@@ -208,6 +206,10 @@ pub fn generate_points(
         }
         SamplerName::ZOrderSz => {
             let mut s = ZOrderSzSampler::new(n, [1, 1], RandomizeStrategy::FastOwen, seed)?;
+            pixel_points(&mut s, n, dims, &mut out);
+        }
+        SamplerName::CascadedSobol => {
+            let mut s = CascadedSobolSampler::new(n, RandomizeStrategy::FastOwen, seed)?;
             pixel_points(&mut s, n, dims, &mut out);
         }
     }

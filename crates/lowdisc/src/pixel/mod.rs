@@ -30,7 +30,9 @@ pub trait PixelSampler {
 }
 
 mod burley;
+mod cascaded_sobol;
 mod global_sobol;
+mod group_cache;
 mod halton;
 mod independent;
 mod padded_sobol;
@@ -45,6 +47,7 @@ pub use burley::{
     BurleySampler, NestedHash, PixelXorSampler, burley_word, laine_karras_scramble_reversed,
     seed_hash,
 };
+pub use cascaded_sobol::CascadedSobolSampler;
 pub use global_sobol::{GlobalSobolMode, GlobalSobolSampler};
 pub use halton::HaltonSampler;
 pub use independent::IndependentSampler;

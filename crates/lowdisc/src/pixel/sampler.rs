@@ -4,9 +4,9 @@
 //! [`crate::catalog::SamplerConfig`].
 
 use super::{
-    BurleySampler, GlobalSobolSampler, HaltonSampler, IndependentSampler, PaddedSobolSampler,
-    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZOrderSzSampler,
-    ZSobolJointSampler, ZSobolSampler,
+    BurleySampler, CascadedSobolSampler, GlobalSobolSampler, HaltonSampler, IndependentSampler,
+    PaddedSobolSampler, PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler,
+    ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -34,6 +34,8 @@ pub enum Sampler {
     ZSobolJoint(ZSobolJointSampler),
     /// Z-order over the base-4 (0,4)-sequence, film and light sample in 5-D.
     ZOrderSz(ZOrderSzSampler),
+    /// Cascaded Sobol': every consecutive pair of dimensions a (0,m,2)-net.
+    CascadedSobol(CascadedSobolSampler),
 }
 
 /// Applies `$body` to the sampler inside whatever variant `$s` is.
@@ -51,6 +53,7 @@ macro_rules! dispatch {
             Sampler::Pmj($inner) => $body,
             Sampler::ZSobolJoint($inner) => $body,
             Sampler::ZOrderSz($inner) => $body,
+            Sampler::CascadedSobol($inner) => $body,
         }
     };
 }
@@ -164,5 +167,11 @@ impl From<ZSobolJointSampler> for Sampler {
 impl From<ZOrderSzSampler> for Sampler {
     fn from(s: ZOrderSzSampler) -> Self {
         Sampler::ZOrderSz(s)
+    }
+}
+
+impl From<CascadedSobolSampler> for Sampler {
+    fn from(s: CascadedSobolSampler) -> Self {
+        Sampler::CascadedSobol(s)
     }
 }

@@ -50,9 +50,8 @@
 //!   above 31 do not enter the point and are hashed into the scramble seed,
 //!   and unscrambled use needs `2 log2 R + m <= 32`.
 
-use super::zsobol_joint::GroupIndices;
-use super::{SEED_PAD, WordSampler, ZSobolSampler};
-use crate::hash::hash_words;
+use super::group_cache::GroupCache;
+use super::{WordSampler, ZSobolSampler};
 use crate::{Error, RandomizeStrategy};
 
 /// The lane of a group that holds the sample's position in its pixel.
@@ -96,8 +95,8 @@ pub struct ZOrderSzSampler {
     /// `m`, the bits of a pixel's block.
     block_bits: u32,
     dimension: u32,
-    /// The groups' permuted indices at the current sample.
-    indices: GroupIndices,
+    /// The groups' permuted indices and scramble keys.
+    cache: GroupCache,
 }
 
 impl ZOrderSzSampler {
@@ -119,7 +118,7 @@ impl ZOrderSzSampler {
             block_mask: ((1u64 << block_bits) - 1) as u32,
             block_bits,
             dimension: 0,
-            indices: GroupIndices::default(),
+            cache: GroupCache::default(),
         })
     }
 
@@ -137,9 +136,11 @@ impl ZOrderSzSampler {
 
     /// The scrambled word of slot `(group, lane)` at the current sample.
     fn word(&mut self, (group, lane): (u64, u32)) -> u32 {
-        let index = self.indices.get(&self.order, group, GROUP_KEY + group);
-        let seed = hash_words(&[self.seed, SEED_PAD, GROUP_KEY + group, index >> 32]);
-        self.strategy.apply(self.lane_word(index, lane), seed, lane)
+        let key = GROUP_KEY + group;
+        let index = self.cache.index(&self.order, group, key);
+        let word = self.lane_word(index, lane);
+        self.cache
+            .scramble(self.strategy, self.seed, (group, key), index, lane, word)
     }
 }
 
@@ -151,7 +152,7 @@ impl WordSampler for ZOrderSzSampler {
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         WordSampler::start_pixel_sample(&mut self.order, pixel, sample_index, 0);
         self.dimension = dimension;
-        self.indices.clear();
+        self.cache.clear();
     }
 
     fn get_1d_word(&mut self) -> u32 {

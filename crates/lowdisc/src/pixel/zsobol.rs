@@ -48,7 +48,7 @@ mod cache;
 
 use self::cache::{Cache, Layout};
 use super::{SEED_PAD, WordSampler};
-use crate::hash::{bounded, hash_words, mix64};
+use crate::hash::hash_words;
 use crate::sobol::sample;
 use crate::{Error, RandomizeStrategy};
 
@@ -195,22 +195,7 @@ impl ZSobolSampler {
     /// The permuted 64-bit sequence index of the current pixel sample for
     /// sampler dimension key `key`.
     pub fn sample_index(&self, key: u64) -> u64 {
-        let dim_seed = hash_words(&[self.seed, SEED_PAD, key]);
-        let odd = self.log2_spp & 1;
-        let mut index = 0u64;
-        for i in (odd..self.base4_digits).rev() {
-            let shift = 2 * i - odd;
-            let digit = (self.morton >> shift) & 3;
-            let higher = self.morton.checked_shr(shift + 2).unwrap_or(0);
-            let level = cache::level(dim_seed, u64::from(i));
-            let p = bounded(mix64(level ^ higher), 24) as usize;
-            index |= u64::from(BASE4_PERMUTATIONS[p][digit as usize]) << shift;
-        }
-        if odd == 1 {
-            let flip = mix64(mix64(dim_seed ^ LOW_BIT_SALT) ^ (self.morton >> 1)) >> 63;
-            index |= (self.morton & 1) ^ flip;
-        }
-        index
+        self.sample_index_with(&mut self.key_index(key))
     }
 
     /// The randomization seed of dimension key `key` (and high index bits
@@ -252,9 +237,13 @@ impl WordSampler for ZSobolSampler {
     }
 }
 
+mod split_index;
+pub(crate) use split_index::KeyIndex;
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::hash::mix64;
 
     #[test]
     fn the_table_holds_all_24_distinct_permutations() {

@@ -40,16 +40,14 @@
 //! index bits are those of [`ZSobolSampler`], whose index permutation this
 //! sampler uses (with group keys above every key `zsobol` uses).
 
-use super::{SEED_PAD, WordSampler, ZSobolSampler};
-use crate::hash::hash_words;
+use super::group_cache::GroupCache;
+use super::{WordSampler, ZSobolSampler};
 use crate::sobol::sample;
 use crate::{Error, RandomizeStrategy};
 
 /// Dimension key of group 0 (groups are `GROUP_KEY + g`); above `zsobol`'s
 /// dimension keys and its pixel key `2^32`.
 const GROUP_KEY: u64 = 1 << 33;
-/// Groups whose permuted index is kept for the current sample.
-const CACHED_GROUPS: usize = 8;
 
 /// Where the sampler dimensions go; see the module documentation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,42 +89,8 @@ pub struct ZSobolJointSampler {
     strategy: RandomizeStrategy,
     seed: u64,
     dimension: u32,
-    /// The groups' permuted indices at the current sample.
-    indices: GroupIndices,
-}
-
-/// The permuted Z-order indices of the current sample's dimension groups,
-/// each computed on first use; groups `0..CACHED_GROUPS` are kept until the
-/// next sample ([`Self::clear`]), later groups are recomputed at every use.
-/// Shared by the group-padded Z-order samplers (this module's and
-/// `zorder-sz`).
-#[derive(Debug, Clone, Default)]
-pub(super) struct GroupIndices {
-    /// Permuted indices of groups `0..CACHED_GROUPS`.
-    indices: [u64; CACHED_GROUPS],
-    /// Bit `g` set when `indices[g]` is computed.
-    known: u32,
-}
-
-impl GroupIndices {
-    /// Forgets every kept index (a new sample starts).
-    pub(super) fn clear(&mut self) {
-        self.known = 0;
-    }
-
-    /// The permuted index of `group`, whose dimension key is `key`, at
-    /// `order`'s current sample.
-    #[inline]
-    pub(super) fn get(&mut self, order: &ZSobolSampler, group: u64, key: u64) -> u64 {
-        let Some(slot) = usize::try_from(group).ok().filter(|&g| g < CACHED_GROUPS) else {
-            return order.sample_index(key);
-        };
-        if self.known & (1 << slot) == 0 {
-            self.indices[slot] = order.sample_index(key);
-            self.known |= 1 << slot;
-        }
-        self.indices[slot]
-    }
+    /// The groups' permuted indices and scramble keys.
+    cache: GroupCache,
 }
 
 impl ZSobolJointSampler {
@@ -146,15 +110,17 @@ impl ZSobolJointSampler {
             strategy,
             seed,
             dimension: 0,
-            indices: GroupIndices::default(),
+            cache: GroupCache::default(),
         })
     }
 
     /// The scrambled word of `lane` in `group` at the current sample.
     fn word(&mut self, (group, lane): (u64, u32)) -> u32 {
-        let index = self.indices.get(&self.order, group, GROUP_KEY + group);
-        let seed = hash_words(&[self.seed, SEED_PAD, GROUP_KEY + group, index >> 32]);
-        self.strategy.apply(sample(index as u32, lane), seed, lane)
+        let key = GROUP_KEY + group;
+        let index = self.cache.index(&self.order, group, key);
+        let word = sample(index as u32, lane);
+        self.cache
+            .scramble(self.strategy, self.seed, (group, key), index, lane, word)
     }
 }
 
@@ -166,7 +132,7 @@ impl WordSampler for ZSobolJointSampler {
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         WordSampler::start_pixel_sample(&mut self.order, pixel, sample_index, 0);
         self.dimension = dimension;
-        self.indices.clear();
+        self.cache.clear();
     }
 
     fn get_1d_word(&mut self) -> u32 {

@@ -161,6 +161,13 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
             0xb96a06dc, 0xe415f4d8, 0x0523f8d2, 0x12d571dc, 0x46dea1a3,
         ],
     ),
+    (
+        SamplerName::CascadedSobol,
+        [
+            0x14cb6910, 0xdec26826, 0xe7fa309f, 0xd764948b, 0xb383e0ed, 0x0ebec5f4, 0x77393c6d,
+            0x3ccaed6a, 0xb1a1088a, 0x97963bef, 0x5050a3c3, 0x41d6537d,
+        ],
+    ),
 ];
 
 #[test]
