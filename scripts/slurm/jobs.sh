@@ -8,7 +8,8 @@
 #                      starts the cluster (local-cluster.sh) with its state
 #                      in $work/cluster; when the script exits, stops exactly
 #                      the daemons it started and removes $work, or keeps it
-#                      (outputs and daemon logs) if the script failed
+#                      (outputs and daemon logs) if the script failed or
+#                      LOWDISC_KEEP_WORK=1 is set
 #   wait_jobs IDS      waits until every job of the comma-separated IDS has
 #                      left the queue (polling each second, at most
 #                      $timeout_s), then fails unless each one COMPLETED
@@ -25,7 +26,7 @@ local_cluster_up() {
 local_cluster_down() {
   local status=$?
   "$here/local-cluster.sh" stop || status=1
-  if [ "$status" -eq 0 ]; then
+  if [ "$status" -eq 0 ] && [ "${LOWDISC_KEEP_WORK:-0}" != 1 ]; then
     rm -rf "$work"
   else
     echo "outputs and daemon logs kept in $work" >&2

@@ -18,7 +18,8 @@
 #   scripts/slurm/overhead.sh [--lowdisc BIN] [--cpus-per-task C] [EXPERIMENT OPTIONS]
 #
 # Without EXPERIMENT OPTIONS it runs the README's default experiment
-# (`lowdisc experiment --out ...`: 10 samplers, 256x144, 16 spp, 3 runs).
+# (`lowdisc experiment --out ...`: 10 samplers, 256x144, 16 spp, 8 runs).
+# LOWDISC_KEEP_WORK=1 keeps both runs' outputs (the folder is printed).
 # C defaults to every core (`nproc`): one unit at a time on the whole
 # machine, as the one-machine run renders. The binary is BIN, else $LOWDISC,
 # else this checkout's target/release/lowdisc. Needs root (as test_local.sh).
