@@ -5,7 +5,8 @@
 //! * display window: the full image, `(0, 0)` to the resolution; data
 //!   window: the part's pixel window (full-image pixel coordinates).
 //! * channels `R`, `G`, `B` (32-bit float): the pixel values,
-//!   [`lowdisc_render::film::PixelSum::value`] of the sums.
+//!   [`RenderPart::values`] of the sums (linear sRGB, spectral renders
+//!   included).
 //! * channels `sum.R.hi`, `sum.R.lo`, `sum.G.*`, `sum.B.*`, `sum.W.*`
 //!   (32-bit unsigned): the high and low halves of the bits of each pixel's
 //!   `f64` sums `Σ w L` (R, G, B) and `Σ w` (W), so merging is exact.
@@ -104,7 +105,7 @@ pub fn encode_part(part: &RenderPart) -> Result<Vec<u8>, PartError> {
     let json = serde_json::to_string(&header).map_err(|e| bad(e.to_string()))?;
     let text = Text::new_or_none(&json).ok_or_else(|| bad("part header is not ASCII"))?;
     let mut channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = SmallVec::new();
-    let values: Vec<[f32; 3]> = part.sums.iter().map(PixelSum::value).collect();
+    let values = part.values();
     for (c, name) in ["R", "G", "B"].iter().enumerate() {
         let plane = values.iter().map(|v| v[c]).collect();
         channels.push(AnyChannel::new(*name, FlatSamples::F32(plane)));

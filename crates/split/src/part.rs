@@ -6,6 +6,7 @@ use lowdisc_image::{ImageError, RgbImage};
 use lowdisc_render::film::{Film, FilmParams, PixelBounds, PixelSum};
 use lowdisc_render::render::{RenderError, RenderOptions, RenderOutput, SampleRange};
 use lowdisc_render::scene::Scene;
+use lowdisc_render::spectrum::sensor::{output_from_sensor, sensor_to_output};
 use sha2::{Digest, Sha256};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -66,7 +67,7 @@ impl RenderPart {
         Ok(RenderPart {
             info: PartInfo {
                 scene,
-                settings: settings(opts),
+                settings: settings_of(params, opts),
                 resolution: params.resolution,
                 film_bounds,
                 window: output.film.pixel_bounds(),
@@ -84,14 +85,43 @@ impl RenderPart {
         i.window == i.film_bounds && i.samples == SampleRange::all(i.spp)
     }
 
-    /// The part's image: each pixel's [`PixelSum::value`], the same values a
-    /// single render's film gives.
+    /// The part's image: [`RenderPart::values`], the same values a single
+    /// render's film gives.
     /// Fails only when `sums` does not match the window's size.
     pub fn image(&self) -> Result<RgbImage, ImageError> {
         let w = self.info.window;
-        let pixels = self.sums.iter().map(PixelSum::value).collect();
-        RgbImage::from_pixels(w.width(), w.height(), pixels)
+        RgbImage::from_pixels(w.width(), w.height(), self.values())
     }
+
+    /// Each pixel's output value: its [`PixelSum::value`], which a spectral
+    /// render's film then takes from the sensor's XYZ to linear sRGB with
+    /// the film's white balance (recorded in the settings), as the film
+    /// does.
+    pub fn values(&self) -> Vec<[f32; 3]> {
+        let s = &self.info.settings;
+        let output = (s.get("spectral").map(String::as_str) == Some("true")).then(|| {
+            let white_balance = s.get("white_balance").and_then(|w| w.parse().ok());
+            output_from_sensor(white_balance.unwrap_or(0.0))
+        });
+        let sums = self.sums.iter().map(PixelSum::value);
+        match output {
+            Some(m) => sums.map(|v| sensor_to_output(&m, v)).collect(),
+            None => sums.collect(),
+        }
+    }
+}
+
+/// [`settings`], and for a spectral render the film's white balance, which
+/// takes its pixels from the sensor to the output.
+fn settings_of(params: &FilmParams, opts: &RenderOptions) -> BTreeMap<String, String> {
+    let mut s = settings(opts);
+    if opts.spectral {
+        s.insert(
+            "white_balance".into(),
+            format!("{:?}", params.white_balance),
+        );
+    }
+    s
 }
 
 /// The settings of `opts` that change pixels, by name: the sampler, its

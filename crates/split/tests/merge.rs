@@ -263,3 +263,22 @@ fn bad_windows_and_ranges_are_refused_before_rendering() {
         "{e}"
     );
 }
+
+#[test]
+fn spectral_parts_hold_and_merge_to_the_single_renders_rgb_image() {
+    let scene = scene();
+    let o = RenderOptions {
+        spectral: true,
+        ..opts(SamplerName::ZSobol, 5)
+    };
+    let out = render(&scene, &o, &NoProgress).unwrap();
+    let expected = out.film.to_image().unwrap();
+    let halves = [window(0, 12, 0, H), window(12, W, 0, H)];
+    let merged = merge(&split(&scene, o, &halves)).unwrap();
+    assert_eq!(merged.info.settings["white_balance"], "0.0");
+    let image = merged.image().unwrap();
+    // Linear sRGB, as the film gives it (not the sensor's XYZ sums).
+    assert_eq!(image.pixels(), expected.pixels());
+    let raw: Vec<[f32; 3]> = merged.sums.iter().map(|s| s.value()).collect();
+    assert_ne!(image.pixels(), &raw[..]);
+}

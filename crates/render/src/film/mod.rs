@@ -408,7 +408,7 @@ impl Film {
         let v = self.acc.value(i);
         match &self.output_from_sensor {
             None => v,
-            Some(m) => m.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2]),
+            Some(m) => crate::spectrum::sensor::sensor_to_output(m, v),
         }
     }
 

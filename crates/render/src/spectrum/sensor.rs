@@ -48,6 +48,12 @@ pub fn output_from_sensor(white_balance_kelvin: f32) -> [[f32; 3]; 3] {
     }
 }
 
+/// A pixel's output value from its sensor value `v` (XYZ) and the matrix
+/// of [`output_from_sensor`]: the one place the film and split parts apply it.
+pub fn sensor_to_output(m: &[[f32; 3]; 3], v: [f32; 3]) -> [f32; 3] {
+    m.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
