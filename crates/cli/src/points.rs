@@ -44,7 +44,8 @@ prints in Gray-code order by default, so\n\
 prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)\n\
 .random(65536) as the integers floor(x * 2^32). The per-pixel samplers\n\
 (padded-sobol, padded-sobol-lms, zsobol, sobol-burley, laine-karras,\n\
-sobol-pixel-xor, pmj02, pmj02bn) print the samples of pixel (0,0) of a\n\
+sobol-pixel-xor, pmj02, pmj02bn, zsobol-4d, zsobol-joint, zorder-sz,\n\
+cascaded-sobol) print the samples of pixel (0,0) of a\n\
 1x1 image with N samples per pixel.\n\
 \n\
 Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a\n\

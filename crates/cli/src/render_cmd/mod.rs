@@ -69,8 +69,11 @@ pub struct RenderArgs {
     /// A pbrt-v4 scene file (omit for the built-in Cornell box).
     scene: Option<PathBuf>,
     /// Pixel sampler: independent, stratified, halton, halton-owen, sobol,
-    /// sobol-xor, sobol-owen, sobol-fast-owen, paper, paper-repro,
-    /// padded-sobol, zsobol [default: the scene's, else zsobol].
+    /// sobol-xor, sobol-owen, sobol-fast-owen, sobol-lms, paper,
+    /// paper-repro, padded-sobol, padded-sobol-lms, zsobol, sobol-burley,
+    /// laine-karras, sobol-pixel-xor, pmj02, pmj02bn, zsobol-4d,
+    /// zsobol-joint, zorder-sz, cascaded-sobol [default: the scene's, else
+    /// zsobol].
     #[arg(long, short = 's', value_name = "NAME")]
     sampler: Option<String>,
     /// Samples per pixel [default: the scene's, else 16].
