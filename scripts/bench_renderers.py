@@ -23,7 +23,7 @@ Reports the best and the median time of each row as a Markdown table.
 Usage:
   cargo build --release -p lowdisc-cli
   pip install -r scripts/requirements-bench.txt
-  DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-15.so \\
+  DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1 \\
     python3 scripts/bench_renderers.py --lowdisc target/release/lowdisc
 """
 
