@@ -1,7 +1,7 @@
 """Benchmark of lowdisc's Python package against scipy and qmcpy, run once
 on one machine; prints a Markdown table (not a test: nothing is asserted).
 
-    python python/bench.py            # the pinned versions: scripts/requirements-bench.txt
+    python -P python/bench.py         # the pinned versions: scripts/requirements-bench.txt
 
 Each figure is the best and the median of ``--repeat`` rounds (wall-clock,
 all cores allowed for every library); the rounds of a row alternate between
