@@ -50,9 +50,10 @@ Usage:
   pip install -r scripts/requirements-bench.txt
   DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM.so.19.1 \\
     python3 scripts/bench_renderers.py --lowdisc target/release/lowdisc \\
-    [--pbrt /path/to/pbrt] [--variants ""]
+    [--pbrt /path/to/pbrt --spectral] [--variants ""]
 (`--variants ""` leaves Mitsuba's render out; the cornell box file still
-needs the mitsuba package.)
+needs the mitsuba package.) pbrt-v4 is not built by this repository: build
+it yourself (CPU, Release) from its own sources and pass its `pbrt` binary.
 """
 
 import argparse
@@ -136,7 +137,7 @@ def pbrt_cases(a, tmp, cbox):
         ' "string lightsampler" [ "%s" ]' % a.pbrt_lightsampler)
     cases = []
     for sampler in SAMPLERS:
-        pbrt_file = pbrt_variants.write_variant(
+        pbrt_file = cbox[sampler] if not extra else pbrt_variants.write_variant(
             cbox[sampler], os.path.join(tmp, "pbrt-cbox-" + sampler), integrator_extra=extra)
         cases.append(("mi.cornell_box()", sampler, None, pbrt_file, a.spp))
     shared = (("bitterli-cornell-box", "bitterli-cornell-box/scene-v4.pbrt",
@@ -179,9 +180,9 @@ def main():
     ap.add_argument("--spectral", action="store_true",
                     help="add lowdisc --spectral rows beside pbrt-v4's")
     ap.add_argument("--bitterli-res", default="256x256")
-    ap.add_argument("--bitterli-spp", type=int, default=64)
-    ap.add_argument("--killeroo-res", default="684x513")
-    ap.add_argument("--killeroo-spp", type=int, default=32)
+    ap.add_argument("--bitterli-spp", type=int, default=32)
+    ap.add_argument("--killeroo-res", default="342x256")
+    ap.add_argument("--killeroo-spp", type=int, default=16)
     a = ap.parse_args()
     import mitsuba as mi
 
