@@ -46,12 +46,8 @@ fn checker_2x2(tex1: Rgb, tex2: Rgb) -> SpectrumTexture {
 
 fn ctx_at(uv: Point2) -> BsdfContext {
     BsdfContext {
-        ns: Vec3::Z,
-        dpdus: Vec3::X,
-        seed: 0,
-        p: Point3::ZERO,
         uv,
-        wo: Vec3::Z,
+        ..BsdfContext::at_origin(0)
     }
 }
 
@@ -116,6 +112,7 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
         integrator: PathIntegrator {
             max_depth: 1,
             strategy: LightStrategy::Mis,
+            ..PathIntegrator::default()
         },
         threads: Some(2),
         tile_size: 8,
@@ -225,10 +222,9 @@ fn constant_materials_do_not_depend_on_the_shading_point() {
             let ctx = BsdfContext {
                 ns: Vec3::new(0.1, 0.2, 0.97).normalize(),
                 dpdus: Vec3::new(1.0, 0.0, -0.1),
-                seed: 5,
                 p: rng.vec(-1.0, 1.0),
                 uv: Point2::new(rng.f32(), rng.f32()),
-                wo: Vec3::Z,
+                ..BsdfContext::at_origin(5)
             };
             let origin = BsdfContext {
                 p: Point3::ZERO,

@@ -30,7 +30,7 @@ pub mod world;
 pub use conductor::ConductorBxdf;
 pub use dielectric::{DielectricBxdf, ThinDielectricBxdf};
 pub use diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
-pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf};
+pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf, LayeredExitWeight};
 pub use material::{
     BsdfContext, ConductorSpec, Material, MaterialError, MixMaterial, Roughness, mix_choice,
 };

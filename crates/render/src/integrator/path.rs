@@ -117,6 +117,7 @@ impl PathIntegrator {
                 ns: surf.ns,
                 dpdus: surf.dpdu,
                 seed: bsdf_seed,
+                layered_exit_weight: self.layered_exit_weight,
                 p: surf.p,
                 uv: surf.uv,
                 wo,
