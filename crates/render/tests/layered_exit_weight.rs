@@ -7,8 +7,8 @@
 //! `sample_f`'s weights `f cos / pdf` (a plain random walk: unbiased whatever
 //! the weight) and by integrating `f` over the hemisphere with a defensive
 //! mixture of cosine and GGX lobes. With lowdisc's default weight
-//! ([`LayeredExitWeight::Unbiased`]) the two agree; with pbrt-v4's reverse
-//! density ([`LayeredExitWeight::PbrtV4`]) `f` is more than 8 % too bright
+//! ([`LayeredExitWeight::UNBIASED`]) the two agree; with pbrt-v4's reverse
+//! density ([`LayeredExitWeight::PBRT_V4`]) `f` is more than 8 % too bright
 //! (about 13 % measured), which is why pbrt-v4's render of that scene is
 //! brighter than lowdisc's (`tests/pbrt_v4_agreement.rs`).
 //!
@@ -17,8 +17,8 @@
 
 use lowdisc::pcg::Pcg32;
 use lowdisc_render::bsdf::{
-    BsdfContext, Bxdf, BxdfModel, ConductorBxdf, ConductorSpec, LayeredExitWeight, Material,
-    Roughness, SampleFlags, TransportMode, TrowbridgeReitz,
+    Bxdf, BxdfModel, ConductorBxdf, ConductorSpec, LayeredExitWeight, Material, Roughness,
+    SampleFlags, TransportMode, TrowbridgeReitz,
 };
 use lowdisc_render::math::Vec3;
 use lowdisc_render::spectrum::Rgb;
@@ -63,10 +63,9 @@ fn killeroo_coated_gold(exit_weight: LayeredExitWeight) -> Bxdf {
         max_depth: 10,
         n_samples: 1,
     };
-    material.bxdf_at(&BsdfContext {
-        layered_exit_weight: exit_weight,
-        ..BsdfContext::at_origin(3)
-    })
+    let mut bxdf = material.bxdf(3);
+    bxdf.set_layered_exit_weight(exit_weight);
+    bxdf
 }
 
 fn dir(theta_deg: f32) -> Vec3 {
@@ -126,7 +125,7 @@ fn albedo_integrated(b: &Bxdf, wo: Vec3) -> Est {
 
 #[test]
 fn default_weight_integrates_to_the_sampled_albedo() {
-    let b = killeroo_coated_gold(LayeredExitWeight::Unbiased);
+    let b = killeroo_coated_gold(LayeredExitWeight::UNBIASED);
     for theta in [0.0, 30.0, 60.0, 80.0] {
         let wo = dir(theta);
         let (s, i) = (albedo_sampled(&b, wo), albedo_integrated(&b, wo));
@@ -146,7 +145,7 @@ fn default_weight_integrates_to_the_sampled_albedo() {
 
 #[test]
 fn pbrt_v4_weight_makes_f_too_bright() {
-    let b = killeroo_coated_gold(LayeredExitWeight::PbrtV4);
+    let b = killeroo_coated_gold(LayeredExitWeight::PBRT_V4);
     for theta in [0.0, 30.0] {
         let wo = dir(theta);
         let (s, i) = (albedo_sampled(&b, wo), albedo_integrated(&b, wo));

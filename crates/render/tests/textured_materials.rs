@@ -46,8 +46,12 @@ fn checker_2x2(tex1: Rgb, tex2: Rgb) -> SpectrumTexture {
 
 fn ctx_at(uv: Point2) -> BsdfContext {
     BsdfContext {
+        ns: Vec3::Z,
+        dpdus: Vec3::X,
+        seed: 0,
+        p: Point3::ZERO,
         uv,
-        ..BsdfContext::at_origin(0)
+        wo: Vec3::Z,
     }
 }
 
@@ -222,9 +226,10 @@ fn constant_materials_do_not_depend_on_the_shading_point() {
             let ctx = BsdfContext {
                 ns: Vec3::new(0.1, 0.2, 0.97).normalize(),
                 dpdus: Vec3::new(1.0, 0.0, -0.1),
+                seed: 5,
                 p: rng.vec(-1.0, 1.0),
                 uv: Point2::new(rng.f32(), rng.f32()),
-                ..BsdfContext::at_origin(5)
+                wo: Vec3::Z,
             };
             let origin = BsdfContext {
                 p: Point3::ZERO,

@@ -23,7 +23,7 @@ mod params;
 use super::conductor::ConductorBxdf;
 use super::dielectric::{DielectricBxdf, ThinDielectricBxdf};
 use super::diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
-use super::layered::{LayeredBxdf, LayeredExitWeight};
+use super::layered::LayeredBxdf;
 use super::{Bsdf, Bxdf, BxdfModel};
 use crate::math::{Frame, Point2, Point3, Vec3};
 use crate::spectrum::{Colour, Rgb};
@@ -134,8 +134,6 @@ pub struct BsdfContext {
     pub dpdus: Vec3,
     /// Seed for the layered BxDF's random walks (e.g. the render seed).
     pub seed: u64,
-    /// How the layered BxDF's walks weight their exit connection.
-    pub layered_exit_weight: LayeredExitWeight,
     /// Hit point (world space): 3-D and planar textures, `mix` choices.
     pub p: Point3,
     /// Surface texture coordinates at the hit.
@@ -152,7 +150,6 @@ impl BsdfContext {
             ns: Vec3::Z,
             dpdus: Vec3::X,
             seed,
-            layered_exit_weight: LayeredExitWeight::Unbiased,
             p: Point3::ZERO,
             uv: Point2::default(),
             wo: Vec3::Z,
@@ -253,17 +250,14 @@ impl Material {
                 eta,
                 max_depth,
                 n_samples,
-            } => Bxdf::CoatedDiffuse(LayeredBxdf {
-                exit_weight: ctx.layered_exit_weight,
-                ..LayeredBxdf::new(
-                    DielectricBxdf::new(fix_eta(*eta), roughness.evaluate(&tc).distribution()),
-                    DiffuseBxdf::new(albedo(reflectance)),
-                    thickness.evaluate(&tc),
-                    *max_depth,
-                    *n_samples,
-                    seed,
-                )
-            }),
+            } => Bxdf::CoatedDiffuse(LayeredBxdf::new(
+                DielectricBxdf::new(fix_eta(*eta), roughness.evaluate(&tc).distribution()),
+                DiffuseBxdf::new(albedo(reflectance)),
+                thickness.evaluate(&tc),
+                *max_depth,
+                *n_samples,
+                seed,
+            )),
             Material::CoatedConductor {
                 interface_roughness,
                 interface_eta,
@@ -279,17 +273,14 @@ impl Material {
                 let (eta, k): (C, C) = conductor.evaluate(&tc).eta_k_for(w);
                 let distribution = conductor_roughness.evaluate(&tc).distribution();
                 let base = ConductorBxdf::new(distribution, eta / ieta, k / ieta);
-                Bxdf::CoatedConductor(LayeredBxdf {
-                    exit_weight: ctx.layered_exit_weight,
-                    ..LayeredBxdf::new(
-                        DielectricBxdf::new(ieta, interface_roughness.evaluate(&tc).distribution()),
-                        base,
-                        thickness.evaluate(&tc),
-                        *max_depth,
-                        *n_samples,
-                        seed,
-                    )
-                })
+                Bxdf::CoatedConductor(LayeredBxdf::new(
+                    DielectricBxdf::new(ieta, interface_roughness.evaluate(&tc).distribution()),
+                    base,
+                    thickness.evaluate(&tc),
+                    *max_depth,
+                    *n_samples,
+                    seed,
+                ))
             }
         }
     }

@@ -292,6 +292,18 @@ impl<C: Colour> BxdfModel<C> for Bxdf<C> {
     }
 }
 
+impl<C> Bxdf<C> {
+    /// Sets how a layered BxDF weights its walks' exit connection; other
+    /// BxDFs are unchanged.
+    pub fn set_layered_exit_weight(&mut self, exit_weight: LayeredExitWeight) {
+        match self {
+            Bxdf::CoatedDiffuse(b) => b.exit_weight = exit_weight,
+            Bxdf::CoatedConductor(b) => b.exit_weight = exit_weight,
+            _ => {}
+        }
+    }
+}
+
 /// Cosine-weighted hemisphere direction (upper hemisphere), pdf `cos θ / π`
 /// (Malley's method on the concentric disk).
 #[inline]

@@ -86,7 +86,7 @@ impl Default for PathIntegrator {
         PathIntegrator {
             max_depth: 5,
             strategy: LightStrategy::Mis,
-            layered_exit_weight: LayeredExitWeight::Unbiased,
+            layered_exit_weight: LayeredExitWeight::UNBIASED,
         }
     }
 }
