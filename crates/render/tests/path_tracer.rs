@@ -41,6 +41,7 @@ fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64
         integrator: PathIntegrator {
             max_depth,
             strategy,
+            ..PathIntegrator::default()
         },
         threads: Some(2),
         tile_size: 16,

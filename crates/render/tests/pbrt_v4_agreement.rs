@@ -8,6 +8,12 @@
 //! * the distribution of 8x8-block luminance ratios lowdisc / pbrt-v4
 //!   centred on 1: its median within 1 % (its 5-95 % range is printed).
 //!
+//! The renders use pbrt-v4's MIS weight in layered BSDFs
+//! ([`LayeredExitWeight::PBRT_V4`]), which makes pbrt-v4's coated materials
+//! too bright (`tests/layered_exit_weight.rs`); lowdisc's default, unbiased
+//! weight is rendered too for the coated gold killeroo, whose red is then
+//! about 2 % below pbrt-v4's.
+//!
 //! Needs the shared data: skipped with a `SKIPPED:` line when absent, a
 //! failure under `LOWDISC_REQUIRE_SCENES=1`. The figures in the README come
 //! from `cargo test --release -p lowdisc-render --test pbrt_v4_agreement --
@@ -15,6 +21,7 @@
 
 use lowdisc::catalog::SamplerName;
 use lowdisc_image::{RgbImage, luminance, read_image};
+use lowdisc_render::bsdf::LayeredExitWeight;
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
@@ -68,8 +75,15 @@ fn agreement(ours: &RgbImage, theirs: &RgbImage) -> Agreement {
 }
 
 /// Renders `scene` (under ../shared/scenes) like `reference` (under
-/// ../shared/pbrt-v4-refs) with `spp` samples, spectral or RGB.
-fn compare(scene: &str, reference: &str, spp: u32, spectral: bool) -> Option<Agreement> {
+/// ../shared/pbrt-v4-refs) with `spp` samples, spectral or RGB, with the
+/// given weight in layered BSDFs.
+fn compare(
+    scene: &str,
+    reference: &str,
+    spp: u32,
+    spectral: bool,
+    layered_exit_weight: LayeredExitWeight,
+) -> Option<Agreement> {
     let scene_path = shared_scenes::file(scene)?;
     let ref_path =
         shared_scenes::existing(shared_scenes::dir().join("../pbrt-v4-refs").join(reference))?;
@@ -80,6 +94,7 @@ fn compare(scene: &str, reference: &str, spp: u32, spectral: bool) -> Option<Agr
     let opts = RenderOptions {
         integrator: PathIntegrator {
             max_depth: loaded.settings.max_depth.unwrap_or(5),
+            layered_exit_weight,
             ..PathIntegrator::default()
         },
         spectral,
@@ -88,9 +103,15 @@ fn compare(scene: &str, reference: &str, spp: u32, spectral: bool) -> Option<Agr
     let out = render(&loaded.scene, &opts, &NoProgress).unwrap();
     let a = agreement(&out.image, &theirs);
     println!(
-        "{scene} ({}, {spp} spp): channel means / pbrt-v4 = {:.4} {:.4} {:.4}; \
+        "{scene} ({}, {} layered weight, {spp} spp): \
+         channel means / pbrt-v4 = {:.4} {:.4} {:.4}; \
          8x8 block luminance ratio median {:.4}, 5-95 % {:.3}-{:.3}; {:.1} s",
         if spectral { "spectral" } else { "RGB" },
+        if layered_exit_weight == LayeredExitWeight::PBRT_V4 {
+            "pbrt-v4"
+        } else {
+            "unbiased"
+        },
         a.mean_ratio[0],
         a.mean_ratio[1],
         a.mean_ratio[2],
@@ -102,15 +123,13 @@ fn compare(scene: &str, reference: &str, spp: u32, spectral: bool) -> Option<Agr
     Some(a)
 }
 
-/// Checks the block median within 1 % and every channel mean within
-/// `mean_tol` (1 % where lowdisc meets the issue's criterion).
-fn check(scene: &str, reference: &str, spp: u32, mean_tol: f64) {
-    let Some(a) = compare(scene, reference, spp, true) else {
-        return;
-    };
+/// Renders spectrally with pbrt-v4's layered weight and checks the block
+/// median and every channel mean within 1 %; returns the agreement.
+fn check(scene: &str, reference: &str, spp: u32) -> Option<Agreement> {
+    let a = compare(scene, reference, spp, true, LayeredExitWeight::PBRT_V4)?;
     for (c, r) in a.mean_ratio.iter().enumerate() {
         assert!(
-            (r - 1.0).abs() < mean_tol,
+            (r - 1.0).abs() < 0.01,
             "{scene}: channel {c} mean ratio {r}"
         );
     }
@@ -120,8 +139,9 @@ fn check(scene: &str, reference: &str, spp: u32, mean_tol: f64) {
         a.blocks[0]
     );
     if std::env::var_os("LOWDISC_AGREEMENT_RGB").is_some() {
-        compare(scene, reference, spp, false);
+        compare(scene, reference, spp, false, LayeredExitWeight::PBRT_V4);
     }
+    Some(a)
 }
 
 #[test]
@@ -130,7 +150,6 @@ fn cornell_box_agrees_with_pbrt_v4() {
         "bitterli-cornell-box/scene-v4.pbrt",
         "bitterli-cornell-box_128x128_1024spp.exr",
         64,
-        0.01,
     );
 }
 
@@ -140,18 +159,23 @@ fn killeroo_gold_agrees_with_pbrt_v4() {
         "killeroos/killeroo-gold.pbrt",
         "killeroo-gold_171x128_512spp.exr",
         64,
-        0.01,
     );
 }
 
 #[test]
 fn killeroo_coated_gold_agrees_with_pbrt_v4() {
-    check(
+    let (scene, reference) = (
         "killeroos/killeroo-coated-gold.pbrt",
         "killeroo-coated-gold_171x128_512spp.exr",
-        64,
-        // Open: the coated (layered) gold's red is 1.8 % below pbrt-v4's
-        // (green 1.3 %, blue 0.5 %); the block median is within 0.3 %.
-        0.025,
     );
+    let Some(pbrt_weight) = check(scene, reference, 64) else {
+        return;
+    };
+    // lowdisc's default weight: pbrt-v4's bias removed, so every channel is
+    // darker than with pbrt-v4's weight, but by no more than 3 %.
+    let own = compare(scene, reference, 64, true, LayeredExitWeight::UNBIASED).unwrap();
+    for c in 0..3 {
+        let (r, p) = (own.mean_ratio[c], pbrt_weight.mean_ratio[c]);
+        assert!(r < p && r > p - 0.03, "channel {c}: {r} against {p}");
+    }
 }

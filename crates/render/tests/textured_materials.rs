@@ -116,6 +116,7 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
         integrator: PathIntegrator {
             max_depth: 1,
             strategy: LightStrategy::Mis,
+            ..PathIntegrator::default()
         },
         threads: Some(2),
         tile_size: 8,

@@ -30,7 +30,7 @@ pub mod world;
 pub use conductor::ConductorBxdf;
 pub use dielectric::{DielectricBxdf, ThinDielectricBxdf};
 pub use diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
-pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf};
+pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf, LayeredExitWeight};
 pub use material::{
     BsdfContext, ConductorSpec, Material, MaterialError, MixMaterial, Roughness, mix_choice,
 };
@@ -289,6 +289,18 @@ impl<C: Colour> BxdfModel<C> for Bxdf<C> {
     }
     fn regularize(&mut self) {
         dispatch!(self, b => BxdfModel::<C>::regularize(b))
+    }
+}
+
+impl<C> Bxdf<C> {
+    /// Sets how a layered BxDF weights its walks' exit connection; other
+    /// BxDFs are unchanged.
+    pub fn set_layered_exit_weight(&mut self, exit_weight: LayeredExitWeight) {
+        match self {
+            Bxdf::CoatedDiffuse(b) => b.exit_weight = exit_weight,
+            Bxdf::CoatedConductor(b) => b.exit_weight = exit_weight,
+            _ => {}
+        }
     }
 }
 

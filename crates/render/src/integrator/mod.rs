@@ -46,6 +46,8 @@
 
 mod path;
 
+use crate::bsdf::LayeredExitWeight;
+
 /// Which estimators of direct lighting are used (tests compare them).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum LightStrategy {
@@ -74,6 +76,9 @@ pub struct PathIntegrator {
     pub max_depth: u32,
     /// Direct-lighting strategy.
     pub strategy: LightStrategy,
+    /// How layered BSDFs weight their walks' exit connection (unbiased by
+    /// default; pbrt-v4's weight to reproduce its images).
+    pub layered_exit_weight: LayeredExitWeight,
 }
 
 impl Default for PathIntegrator {
@@ -81,6 +86,7 @@ impl Default for PathIntegrator {
         PathIntegrator {
             max_depth: 5,
             strategy: LightStrategy::Mis,
+            layered_exit_weight: LayeredExitWeight::UNBIASED,
         }
     }
 }

@@ -2,7 +2,7 @@
 
 use super::{LightStrategy, PathIntegrator, PathStats, sqr};
 use crate::bsdf::material::BsdfContext;
-use crate::bsdf::{Bsdf, TransportMode, power_heuristic};
+use crate::bsdf::{Bsdf, LayeredExitWeight, TransportMode, power_heuristic};
 use crate::light::LightSampleContext;
 use crate::math::{Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
 use crate::scene::Scene;
@@ -121,10 +121,13 @@ impl PathIntegrator {
                 uv: surf.uv,
                 wo,
             };
-            let bsdf = match sh.hit.shading {
+            let mut bsdf = match sh.hit.shading {
                 Some(frame) => material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w),
                 None => material.bsdf_for::<C>(&bsdf_ctx, w),
             };
+            if self.layered_exit_weight != LayeredExitWeight::UNBIASED {
+                bsdf.bxdf.set_layered_exit_weight(self.layered_exit_weight);
+            }
             let flags = bsdf.flags();
             let ctx = LightSampleContext::new(surf.p, surf.ng, surf.ns);
             if flags.is_non_specular() && self.strategy != LightStrategy::BsdfOnly {
