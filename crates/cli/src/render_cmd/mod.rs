@@ -19,6 +19,7 @@ use std::time::Instant;
 use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
+use lowdisc_render::bsdf::LayeredExitWeight;
 use lowdisc_render::film::PixelBounds;
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::render::{Progress, RenderOptions, SampleRange, render};
@@ -122,6 +123,11 @@ pub struct RenderArgs {
     /// uplifted to spectra, CIE 1931 sensor) instead of in RGB, the default.
     #[arg(long)]
     spectral: bool,
+    /// MIS weight of the light leaving a coated (layered) material:
+    /// `unbiased` (the default) or `pbrt-v4`, pbrt-v4's reverse-density
+    /// weight, which is brighter and matches pbrt-v4's images.
+    #[arg(long, value_enum, value_name = "WEIGHT", default_value_t = LayeredWeight::Unbiased)]
+    layered_weight: LayeredWeight,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -167,6 +173,29 @@ pub struct RenderConfig {
     pub samples: Option<SampleRange>,
     /// Spectral rendering instead of RGB.
     pub spectral: bool,
+    /// The layered materials' exit MIS weight.
+    pub layered_weight: LayeredExitWeight,
+}
+
+/// `--layered-weight`: which MIS weight layered BSDFs use for the walk's
+/// connection out through the coat.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum LayeredWeight {
+    /// Weights that sum to 1: `f` agrees with the BSDF's own sampling.
+    Unbiased,
+    /// pbrt-v4's reverse density, for comparisons with pbrt-v4's images.
+    #[value(name = "pbrt-v4")]
+    PbrtV4,
+}
+
+impl LayeredWeight {
+    /// The renderer's value of this choice.
+    pub fn exit_weight(self) -> LayeredExitWeight {
+        match self {
+            LayeredWeight::Unbiased => LayeredExitWeight::UNBIASED,
+            LayeredWeight::PbrtV4 => LayeredExitWeight::PBRT_V4,
+        }
+    }
 }
 
 impl RenderConfig {
@@ -224,6 +253,7 @@ impl RenderArgs {
                 .map(parse::sample_range)
                 .transpose()?,
             spectral: self.spectral,
+            layered_weight: self.layered_weight.exit_weight(),
         })
     }
 }

@@ -112,6 +112,7 @@ pub(super) fn prepare(
         },
         integrator: PathIntegrator {
             max_depth: config.max_depth.unwrap_or(max_depth),
+            layered_exit_weight: config.layered_weight,
             ..PathIntegrator::default()
         },
         threads: config.threads,
