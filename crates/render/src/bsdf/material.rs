@@ -212,8 +212,24 @@ impl Material {
         self.bxdf_for(ctx, &())
     }
 
-    /// [`Material::bxdf_at`] in colour `C` at wavelengths `w`.
+    /// [`Material::bxdf_at`] in colour `C` at wavelengths `w`. A diffuse
+    /// material, the common case, is built inline; the others through one
+    /// call.
+    #[inline]
     pub fn bxdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bxdf<C> {
+        match self {
+            Material::Diffuse { reflectance } => {
+                let r = C::albedo(reflectance.evaluate(&ctx.texture_context()), w);
+                Bxdf::Diffuse(DiffuseBxdf::new(r))
+            }
+            _ => self.bxdf_for_other(ctx, w),
+        }
+    }
+
+    /// [`Material::bxdf_for`] of every material (called for those other
+    /// than diffuse).
+    #[inline(never)]
+    fn bxdf_for_other<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bxdf<C> {
         let fix_eta = |e: f32| if e > 0.0 && e.is_finite() { e } else { 1.0 };
         let tc = ctx.texture_context();
         let seed = ctx.seed;
