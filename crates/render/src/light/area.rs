@@ -195,7 +195,7 @@ impl DiffuseAreaLight {
     /// [`super::Light::sample_li`] of this light (`u` already clamped to
     /// `[0, 1)`), `None` unless the sample
     /// [carries light](LightLiSample::carries_light).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn sample_li(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
         match &self.shape {
             AreaShape::Triangle { p, n } => self.sample_triangle(p, *n, ctx, u),
@@ -205,7 +205,7 @@ impl DiffuseAreaLight {
 
     /// [`Self::sample_li`] on a triangle: a point uniform by area (as
     /// [`AreaShape::sample`]), its density converted to solid angle.
-    #[inline]
+    #[inline(always)]
     fn sample_triangle(
         &self,
         p: &[Point3; 3],
