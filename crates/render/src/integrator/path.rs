@@ -185,7 +185,7 @@ impl PathIntegrator {
     /// Next-event estimation: one light chosen by power, one sample of it,
     /// a shadow ray, weighted against BSDF sampling by the power heuristic.
     #[allow(clippy::too_many_arguments)]
-    #[inline]
+    #[inline(always)]
     fn sample_ld<C: Colour>(
         &self,
         scene: &Scene,

@@ -153,7 +153,7 @@ impl Light {
     /// Samples incident light at `ctx` from the 2D uniform sample `u`; `None`
     /// when the sample carries no light (zero radiance or density, or the
     /// point is outside a spot light's cone).
-    #[inline]
+    #[inline(always)]
     pub fn sample_li(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
         let u = [
             crate::sampling::clamp_unit(u[0]),
