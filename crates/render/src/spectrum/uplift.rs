@@ -12,8 +12,15 @@
 //! * illuminant: the unbounded spectrum times the sRGB white, D65,
 //!   normalised to luminance 1 (`∫ ȳ D65 = 1`), so `(1, 1, 1)` is white light
 //!   of luminance 1, as pbrt-v4's lights after their photometric scaling.
+//!
+//! **Memo.** A table lookup costs hundreds of instructions and a render
+//! asks for the same few colours (constant reflectances, emission) at every
+//! vertex, so each thread keeps the last coefficients of [`MEMO_SLOTS`]
+//! inputs, indexed by a hash of their bits: a hit returns exactly what the
+//! table returned for the same bits.
 
 use super::Rgb;
+use std::cell::Cell;
 use lowdisc_colour::cie::{LAMBDA_MIN, d65, y_integral};
 use lowdisc_colour::sigmoid::{SigmoidTable, eval};
 use std::sync::LazyLock;
@@ -42,6 +49,53 @@ pub fn table() -> &'static SigmoidTable {
     &TABLE
 }
 
+/// Entries of each thread's memo of [`table`]'s coefficients (a power of 2).
+pub const MEMO_SLOTS: usize = 64;
+
+/// One memo entry: the bits of an input and its coefficients.
+#[derive(Clone, Copy)]
+struct MemoEntry {
+    filled: bool,
+    key: [u32; 3],
+    coefficients: [f32; 3],
+}
+
+thread_local! {
+    static MEMO: [Cell<MemoEntry>; MEMO_SLOTS] = const {
+        [const {
+            Cell::new(MemoEntry {
+                filled: false,
+                key: [0; 3],
+                coefficients: [0.0; 3],
+            })
+        }; MEMO_SLOTS]
+    };
+}
+
+/// `table().coefficients(rgb)`, through this thread's memo.
+#[inline]
+pub fn coefficients(rgb: [f32; 3]) -> [f32; 3] {
+    let key = rgb.map(f32::to_bits);
+    let hash = key[0].wrapping_mul(0x9e37_79b1)
+        ^ key[1].wrapping_mul(0x85eb_ca77)
+        ^ key[2].wrapping_mul(0xc2b2_ae3d);
+    let slot = (hash >> (32 - MEMO_SLOTS.trailing_zeros())) as usize;
+    MEMO.with(|memo| {
+        let entry = &memo[slot];
+        let e = entry.get();
+        if e.filled && e.key == key {
+            return e.coefficients;
+        }
+        let coefficients = TABLE.coefficients(rgb);
+        entry.set(MemoEntry {
+            filled: true,
+            key,
+            coefficients,
+        });
+        coefficients
+    })
+}
+
 /// A sigmoid-polynomial spectrum times a scale.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RgbSpectrum {
@@ -62,7 +116,7 @@ impl RgbSpectrum {
 /// The reflectance spectrum of `rgb` (channels clamped to `[0, 1]`).
 pub fn albedo(rgb: Rgb) -> RgbSpectrum {
     RgbSpectrum {
-        coefficients: TABLE.coefficients(rgb.clamp(0.0, 1.0).to_array()),
+        coefficients: coefficients(rgb.clamp(0.0, 1.0).to_array()),
         scale: 1.0,
     }
 }
@@ -73,7 +127,7 @@ pub fn unbounded(rgb: Rgb) -> RgbSpectrum {
     let scale = 2.0 * rgb.max_component();
     let unit = if scale > 0.0 { rgb / scale } else { Rgb::ZERO };
     RgbSpectrum {
-        coefficients: TABLE.coefficients(unit.to_array()),
+        coefficients: coefficients(unit.to_array()),
         scale,
     }
 }
@@ -124,6 +178,29 @@ mod tests {
         errors.sort_by(f32::total_cmp);
         let (p99, max) = (errors[989], errors[999]);
         assert!(p99 < 1e-3 && max < 1.5e-3, "p99 {p99}, max {max}");
+    }
+
+    #[test]
+    fn the_memo_returns_the_tables_coefficients_bit_for_bit() {
+        // Random colours, each asked for twice, far apart and interleaved
+        // (so that slots are refilled and hit), plus greys, zeros of both
+        // signs and NaN.
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let mut inputs: Vec<[f32; 3]> = (0..500).map(|_| [next(), next(), next()]).collect();
+        inputs.extend([[0.5; 3], [0.0; 3], [-0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [f32::NAN, 0.2, 0.1]]);
+        let bits = |c: [f32; 3]| c.map(f32::to_bits);
+        for _ in 0..2 {
+            for (i, &rgb) in inputs.iter().enumerate() {
+                let want = bits(table().coefficients(rgb));
+                assert_eq!(bits(coefficients(rgb)), want, "{rgb:?}");
+                let other = inputs[(i * 7 + 3) % inputs.len()];
+                assert_eq!(bits(coefficients(other)), bits(table().coefficients(other)));
+            }
+        }
     }
 
     #[test]
