@@ -79,9 +79,12 @@ pub fn xyz_bar(lambda: f32) -> [f32; 3] {
         return [0.0; 3];
     }
     let x = lambda - LAMBDA_MIN;
-    let i = (x as usize).min(CMF[0].len() - 2);
-    let t = x - i as f32;
-    CMF.each_ref().map(|c| c[i] + t * (c[i + 1] - c[i]))
+    // `x` is in `[0, 470]`: truncating through `i32` is `x as usize`, in
+    // one instruction.
+    let cmf = &*CMF;
+    let i = (x as i32 as usize).min(cmf[0].len() - 2);
+    let t = x - i as i32 as f32;
+    cmf.each_ref().map(|c| c[i] + t * (c[i + 1] - c[i]))
 }
 
 /// The matching functions sampled at every nanometre 360..=830 (471 rows).

@@ -37,11 +37,9 @@ static TABLE: LazyLock<SigmoidTable> = LazyLock::new(|| {
 });
 
 /// D65 at every nanometre 360..=830, divided by `∫ ȳ D65`.
-static D65_UNIT: LazyLock<Vec<f32>> = LazyLock::new(|| {
+static D65_UNIT: LazyLock<[f32; 471]> = LazyLock::new(|| {
     let y = y_integral(|l| d65().eval(l));
-    (0..471)
-        .map(|i| d65().eval(LAMBDA_MIN + i as f32) / y)
-        .collect()
+    std::array::from_fn(|i| d65().eval(LAMBDA_MIN + i as f32) / y)
 });
 
 /// The uplift table.
@@ -140,9 +138,12 @@ pub fn illuminant_d65(lambda: f32) -> f32 {
     if !(0.0..=470.0).contains(&x) {
         return 0.0;
     }
-    let i = (x as usize).min(469);
-    let t = x - i as f32;
-    D65_UNIT[i] + t * (D65_UNIT[i + 1] - D65_UNIT[i])
+    // `x` is in `[0, 470]`: truncating through `i32` is `x as usize`, in
+    // one instruction, and the table's fixed length needs no bounds checks.
+    let i = (x as i32 as usize).min(469);
+    let t = x - i as i32 as f32;
+    let d = &*D65_UNIT;
+    d[i] + t * (d[i + 1] - d[i])
 }
 
 #[cfg(test)]
