@@ -196,7 +196,8 @@ impl Material {
 
     /// [`Material::bsdf_for`] given its shading frame, `frame =
     /// Frame::shading(ctx.ns, ctx.dpdus)` (which a caller may keep per
-    /// triangle, see [`crate::accel::Hit::shading`]).
+    /// triangle, see [`crate::accel::Hit::shading`]). Each branch builds
+    /// the BSDF where it is returned (no copy of the BxDF).
     #[inline]
     pub fn bsdf_in_frame<C: Colour>(
         &self,
@@ -204,7 +205,21 @@ impl Material {
         ctx: &BsdfContext,
         w: &C::Wavelengths,
     ) -> Bsdf<C> {
-        Bsdf::with_frame(frame, self.bxdf_for(ctx, w))
+        match self {
+            Material::Diffuse { .. } => Bsdf::with_frame(frame, self.bxdf_for(ctx, w)),
+            _ => self.bsdf_in_frame_other(frame, ctx, w),
+        }
+    }
+
+    /// [`Material::bsdf_in_frame`] of the materials other than diffuse.
+    #[inline(never)]
+    fn bsdf_in_frame_other<C: Colour>(
+        &self,
+        frame: Frame,
+        ctx: &BsdfContext,
+        w: &C::Wavelengths,
+    ) -> Bsdf<C> {
+        Bsdf::with_frame(frame, self.bxdf_for_other(ctx, w))
     }
 
     /// The local-frame BxDF at a shading point (textures evaluated there).
