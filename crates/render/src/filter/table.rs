@@ -268,7 +268,10 @@ mod tests {
     fn plain_sample(t: &FilterTable, u: [f32; 2]) -> ([f32; 2], f32) {
         let invert = |cdf: &[f64], u: f64| {
             let n = cdf.len() - 1;
-            let o = cdf.partition_point(|&c| c <= u).saturating_sub(1).min(n - 1);
+            let o = cdf
+                .partition_point(|&c| c <= u)
+                .saturating_sub(1)
+                .min(n - 1);
             let width = cdf[o + 1] - cdf[o];
             let du = if width > 0.0 {
                 ((u - cdf[o]) / width).clamp(0.0, 1.0)
@@ -288,7 +291,11 @@ mod tests {
             (-r[1] + 2.0 * r[1] * fy).clamp(-r[1], r[1]),
         ];
         let v = t.values[j * t.nx + i];
-        let w = if v == 0.0 { 0.0 } else { (t.abs_integral as f32).copysign(v) };
+        let w = if v == 0.0 {
+            0.0
+        } else {
+            (t.abs_integral as f32).copysign(v)
+        };
         (offset, w)
     }
 
@@ -302,13 +309,27 @@ mod tests {
         ];
         let mut state = 0x9e37_79b9_7f4a_7c15u64;
         let mut next = || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (state >> 40) as f32 / (1u64 << 24) as f32
         };
-        let edges = [0.0, 0.5, 1.0 - f32::EPSILON / 2.0, 1.0, -0.25, 1.5, f32::NAN];
+        let edges = [
+            0.0,
+            0.5,
+            1.0 - f32::EPSILON / 2.0,
+            1.0,
+            -0.25,
+            1.5,
+            f32::NAN,
+        ];
         for t in &tables {
             let mut us: Vec<[f32; 2]> = (0..20_000).map(|_| [next(), next()]).collect();
-            us.extend(edges.iter().flat_map(|&a| edges.iter().map(move |&b| [a, b])));
+            us.extend(
+                edges
+                    .iter()
+                    .flat_map(|&a| edges.iter().map(move |&b| [a, b])),
+            );
             for u in us {
                 let (got, want) = (t.sample(u), plain_sample(t, u));
                 assert_eq!(got.0.map(f32::to_bits), want.0.map(f32::to_bits), "{u:?}");

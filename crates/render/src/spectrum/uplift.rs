@@ -20,9 +20,9 @@
 //! table returned for the same bits.
 
 use super::Rgb;
-use std::cell::Cell;
 use lowdisc_colour::cie::{LAMBDA_MIN, d65, y_integral};
 use lowdisc_colour::sigmoid::{SigmoidTable, eval};
+use std::cell::Cell;
 use std::sync::LazyLock;
 
 /// The resolution of the embedded table (its `z` axis and both ratio axes).
@@ -188,11 +188,19 @@ mod tests {
         // signs and NaN.
         let mut state = 0x2545_f491_4f6c_dd1du64;
         let mut next = || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             (state >> 40) as f32 / (1u64 << 24) as f32
         };
         let mut inputs: Vec<[f32; 3]> = (0..500).map(|_| [next(), next(), next()]).collect();
-        inputs.extend([[0.5; 3], [0.0; 3], [-0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [f32::NAN, 0.2, 0.1]]);
+        inputs.extend([
+            [0.5; 3],
+            [0.0; 3],
+            [-0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [f32::NAN, 0.2, 0.1],
+        ]);
         let bits = |c: [f32; 3]| c.map(f32::to_bits);
         for _ in 0..2 {
             for (i, &rgb) in inputs.iter().enumerate() {
