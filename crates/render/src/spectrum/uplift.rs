@@ -15,15 +15,16 @@
 //!
 //! **Memo.** A table lookup costs hundreds of instructions and a render
 //! asks for the same few colours (constant reflectances, emission) at every
-//! vertex, so each thread keeps the last coefficients of [`MEMO_SLOTS`]
-//! inputs, indexed by a hash of their bits: a hit returns exactly what the
-//! table returned for the same bits.
+//! vertex, so each thread keeps the spectra of the last [`MEMO_SLOTS`]
+//! inputs of [`albedo`] and of [`unbounded`], indexed by a hash of their
+//! bits: a hit returns exactly what the table gave for the same bits.
 
 use super::Rgb;
 use lowdisc_colour::cie::{LAMBDA_MIN, d65, y_integral};
 use lowdisc_colour::sigmoid::{SigmoidTable, eval};
 use std::cell::Cell;
 use std::sync::LazyLock;
+use std::thread::LocalKey;
 
 /// The resolution of the embedded table (its `z` axis and both ratio axes).
 pub const TABLE_RESOLUTION: usize = 64;
@@ -47,50 +48,63 @@ pub fn table() -> &'static SigmoidTable {
     &TABLE
 }
 
-/// Entries of each thread's memo of [`table`]'s coefficients (a power of 2).
+/// Entries of each thread's memos of [`albedo`] and [`unbounded`] (a power
+/// of 2).
 pub const MEMO_SLOTS: usize = 64;
 
-/// One memo entry: the bits of an input and its coefficients.
+/// One memo entry: the bits of an input colour and its spectrum.
 #[derive(Clone, Copy)]
 struct MemoEntry {
     filled: bool,
     key: [u32; 3],
-    coefficients: [f32; 3],
+    value: RgbSpectrum,
 }
 
+/// A memo: [`MEMO_SLOTS`] entries, indexed by a hash of the input's bits.
+type Memo = [Cell<MemoEntry>; MEMO_SLOTS];
+
 thread_local! {
-    static MEMO: [Cell<MemoEntry>; MEMO_SLOTS] = const {
-        [const {
-            Cell::new(MemoEntry {
-                filled: false,
-                key: [0; 3],
-                coefficients: [0.0; 3],
-            })
-        }; MEMO_SLOTS]
+    static ALBEDO_MEMO: Memo = const { [const { Cell::new(MemoEntry::EMPTY) }; MEMO_SLOTS] };
+    static UNBOUNDED_MEMO: Memo = const { [const { Cell::new(MemoEntry::EMPTY) }; MEMO_SLOTS] };
+}
+
+impl MemoEntry {
+    const EMPTY: MemoEntry = MemoEntry {
+        filled: false,
+        key: [0; 3],
+        value: RgbSpectrum {
+            coefficients: [0.0; 3],
+            scale: 0.0,
+        },
     };
 }
 
-/// `table().coefficients(rgb)`, through this thread's memo.
+/// `f(rgb)` through this thread's `memo`: the value `f` gave for the same
+/// bits, or `f`'s value now (kept for the next call).
 #[inline]
-pub fn coefficients(rgb: [f32; 3]) -> [f32; 3] {
-    let key = rgb.map(f32::to_bits);
+fn memoised(
+    memo: &'static LocalKey<Memo>,
+    rgb: Rgb,
+    f: impl FnOnce(Rgb) -> RgbSpectrum,
+) -> RgbSpectrum {
+    let key = rgb.to_array().map(f32::to_bits);
     let hash = key[0].wrapping_mul(0x9e37_79b1)
         ^ key[1].wrapping_mul(0x85eb_ca77)
         ^ key[2].wrapping_mul(0xc2b2_ae3d);
     let slot = (hash >> (32 - MEMO_SLOTS.trailing_zeros())) as usize;
-    MEMO.with(|memo| {
+    memo.with(|memo| {
         let entry = &memo[slot];
         let e = entry.get();
         if e.filled && e.key == key {
-            return e.coefficients;
+            return e.value;
         }
-        let coefficients = TABLE.coefficients(rgb);
+        let value = f(rgb);
         entry.set(MemoEntry {
             filled: true,
             key,
-            coefficients,
+            value,
         });
-        coefficients
+        value
     })
 }
 
@@ -113,19 +127,29 @@ impl RgbSpectrum {
 
 /// The reflectance spectrum of `rgb` (channels clamped to `[0, 1]`).
 pub fn albedo(rgb: Rgb) -> RgbSpectrum {
+    memoised(&ALBEDO_MEMO, rgb, albedo_from_table)
+}
+
+/// [`albedo`] from the table, without the memo.
+fn albedo_from_table(rgb: Rgb) -> RgbSpectrum {
     RgbSpectrum {
-        coefficients: coefficients(rgb.clamp(0.0, 1.0).to_array()),
+        coefficients: TABLE.coefficients(rgb.clamp(0.0, 1.0).to_array()),
         scale: 1.0,
     }
 }
 
 /// The spectrum of a non-negative `rgb` of any magnitude.
 pub fn unbounded(rgb: Rgb) -> RgbSpectrum {
+    memoised(&UNBOUNDED_MEMO, rgb, unbounded_from_table)
+}
+
+/// [`unbounded`] from the table, without the memo.
+fn unbounded_from_table(rgb: Rgb) -> RgbSpectrum {
     let rgb = rgb.clamp(0.0, f32::MAX);
     let scale = 2.0 * rgb.max_component();
     let unit = if scale > 0.0 { rgb / scale } else { Rgb::ZERO };
     RgbSpectrum {
-        coefficients: coefficients(unit.to_array()),
+        coefficients: TABLE.coefficients(unit.to_array()),
         scale,
     }
 }
@@ -182,32 +206,33 @@ mod tests {
     }
 
     #[test]
-    fn the_memo_returns_the_tables_coefficients_bit_for_bit() {
-        // Random colours, each asked for twice, far apart and interleaved
-        // (so that slots are refilled and hit), plus greys, zeros of both
-        // signs and NaN.
+    fn the_memos_return_the_tables_spectra_bit_for_bit() {
+        // Random colours (some above 1, for `unbounded`), each asked for
+        // twice, far apart and interleaved (so that slots are refilled and
+        // hit), plus greys, zeros of both signs, negatives and NaN.
         let mut state = 0x2545_f491_4f6c_dd1du64;
         let mut next = || {
             state = state
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407);
-            (state >> 40) as f32 / (1u64 << 24) as f32
+            (state >> 40) as f32 / (1u64 << 22) as f32
         };
-        let mut inputs: Vec<[f32; 3]> = (0..500).map(|_| [next(), next(), next()]).collect();
+        let mut inputs: Vec<Rgb> = (0..500).map(|_| Rgb::new(next(), next(), next())).collect();
         inputs.extend([
-            [0.5; 3],
-            [0.0; 3],
-            [-0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [f32::NAN, 0.2, 0.1],
+            Rgb::splat(0.5),
+            Rgb::ZERO,
+            Rgb::new(-0.0, 0.0, 0.0),
+            Rgb::new(1.0, 0.0, -2.0),
+            Rgb::new(f32::NAN, 0.2, 0.1),
         ]);
-        let bits = |c: [f32; 3]| c.map(f32::to_bits);
+        let bits = |s: RgbSpectrum| (s.coefficients.map(f32::to_bits), s.scale.to_bits());
         for _ in 0..2 {
             for (i, &rgb) in inputs.iter().enumerate() {
-                let want = bits(table().coefficients(rgb));
-                assert_eq!(bits(coefficients(rgb)), want, "{rgb:?}");
                 let other = inputs[(i * 7 + 3) % inputs.len()];
-                assert_eq!(bits(coefficients(other)), bits(table().coefficients(other)));
+                for c in [rgb, other] {
+                    assert_eq!(bits(albedo(c)), bits(albedo_from_table(c)), "{c:?}");
+                    assert_eq!(bits(unbounded(c)), bits(unbounded_from_table(c)), "{c:?}");
+                }
             }
         }
     }
