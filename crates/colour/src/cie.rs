@@ -72,6 +72,11 @@ static CMF: LazyLock<[Vec<f32>; 3]> = LazyLock::new(|| {
     [x, y, z]
 });
 
+/// [`CMF`] by rows, `[x̄, ȳ, z̄]` at each nanometre 360..=830 (a fixed
+/// length, so that [`xyz_bar`] reads it without bounds checks).
+static CMF_ROWS: LazyLock<[[f32; 3]; 471]> =
+    LazyLock::new(|| std::array::from_fn(|i| CMF.each_ref().map(|c| c[i])));
+
 /// `[x̄(λ), ȳ(λ), z̄(λ)]`, linear between the 1 nm samples, zero outside
 /// 360–830 nm.
 pub fn xyz_bar(lambda: f32) -> [f32; 3] {
@@ -79,9 +84,13 @@ pub fn xyz_bar(lambda: f32) -> [f32; 3] {
         return [0.0; 3];
     }
     let x = lambda - LAMBDA_MIN;
-    let i = (x as usize).min(CMF[0].len() - 2);
-    let t = x - i as f32;
-    CMF.each_ref().map(|c| c[i] + t * (c[i + 1] - c[i]))
+    // `x` is in `[0, 470]`: truncating through `i32` is `x as usize`, in
+    // one instruction.
+    let rows = &*CMF_ROWS;
+    let i = (x as i32 as usize).min(rows.len() - 2);
+    let t = x - i as i32 as f32;
+    let (a, b) = (rows[i], rows[i + 1]);
+    std::array::from_fn(|c| a[c] + t * (b[c] - a[c]))
 }
 
 /// The matching functions sampled at every nanometre 360..=830 (471 rows).

@@ -128,7 +128,11 @@ pub fn camera_sample(
 #[derive(Clone, Debug)]
 pub struct PerspectiveCamera {
     world_from_camera: Transform,
+    /// `world_from_camera.point(Point3::ZERO)`: every pinhole ray's origin.
+    pinhole_origin: Point3,
     resolution: [u32; 2],
+    /// `resolution` converted to `f32` once.
+    resolution_f32: [f32; 2],
     /// Screen window `[xmin, xmax, ymin, ymax]`.
     screen: [f32; 4],
     tan_half_fov: f32,
@@ -182,8 +186,10 @@ impl PerspectiveCamera {
             return Err(CameraError::InvalidScreenWindow(screen));
         }
         Ok(PerspectiveCamera {
+            pinhole_origin: world_from_camera.point(Point3::ZERO),
             world_from_camera,
             resolution,
+            resolution_f32: resolution.map(|r| r as f32),
             screen,
             tan_half_fov: (params.fov.to_radians() * 0.5).tan(),
             lens_radius: params.lens_radius,
@@ -222,8 +228,9 @@ impl PerspectiveCamera {
     /// position `p` (not normalised; its direction is the pinhole ray's).
     pub fn camera_from_raster(&self, p: [f32; 2]) -> Point3 {
         let [x0, x1, y0, y1] = self.screen;
-        let sx = x0 + (p[0] / self.resolution[0] as f32) * (x1 - x0);
-        let sy = y1 - (p[1] / self.resolution[1] as f32) * (y1 - y0);
+        let [w, h] = self.resolution_f32;
+        let sx = x0 + (p[0] / w) * (x1 - x0);
+        let sy = y1 - (p[1] / h) * (y1 - y0);
         Vec3::new(sx * self.tan_half_fov, sy * self.tan_half_fov, 1.0)
     }
 
@@ -259,23 +266,28 @@ impl PerspectiveCamera {
     /// The world-space ray for film position `film_pos` (raster pixels) and
     /// lens sample `lens` in `[0,1)^2` (ignored for a pinhole). The direction
     /// is normalised.
+    #[inline]
     pub fn generate_ray(&self, film_pos: [f32; 2], lens: [f32; 2]) -> Ray {
         let p_cam = self.camera_from_raster(film_pos);
-        let mut ray = Ray::new(Point3::ZERO, p_cam.normalize());
-        if self.lens_radius > 0.0 {
-            let d = sample_uniform_disk_concentric(Point2::new(lens[0], lens[1]));
-            let o = Point3::new(d.x * self.lens_radius, d.y * self.lens_radius, 0.0);
-            // The pinhole ray reaches depth `focal_distance` at `p_cam * focal_distance`.
-            let focus = p_cam * self.focal_distance;
-            ray = Ray::new(o, (focus - o).normalize());
+        if !(self.lens_radius > 0.0) {
+            // The pinhole ray from the camera-space origin, whose world
+            // position is kept.
+            let d = self.world_from_camera.vector(p_cam.normalize());
+            return Ray::new(self.pinhole_origin, d.normalize());
         }
+        let d = sample_uniform_disk_concentric(Point2::new(lens[0], lens[1]));
+        let o = Point3::new(d.x * self.lens_radius, d.y * self.lens_radius, 0.0);
+        // The pinhole ray reaches depth `focal_distance` at `p_cam * focal_distance`.
+        let focus = p_cam * self.focal_distance;
+        let d = (focus - o).normalize();
         Ray::new(
-            self.world_from_camera.point(ray.o),
-            self.world_from_camera.vector(ray.d).normalize(),
+            self.world_from_camera.point(o),
+            self.world_from_camera.vector(d).normalize(),
         )
     }
 
     /// [`Self::generate_ray`] for a [`CameraSample`].
+    #[inline]
     pub fn generate_ray_for(&self, sample: &CameraSample) -> Ray {
         self.generate_ray(sample.p_film, sample.p_lens)
     }

@@ -19,6 +19,7 @@ pub struct DiffuseBxdf<C = Rgb> {
 
 impl<C: Colour> DiffuseBxdf<C> {
     /// A Lambertian reflector; `r` is clamped to `[0, 1]` per channel.
+    #[inline]
     pub fn new(r: C) -> Self {
         DiffuseBxdf {
             r: r.clamp(0.0, 1.0),
@@ -27,6 +28,7 @@ impl<C: Colour> DiffuseBxdf<C> {
 }
 
 impl<C: Colour> BxdfModel<C> for DiffuseBxdf<C> {
+    #[inline]
     fn flags(&self) -> BxdfFlags {
         if self.r.is_black() {
             BxdfFlags::UNSET
@@ -34,12 +36,14 @@ impl<C: Colour> BxdfModel<C> for DiffuseBxdf<C> {
             BxdfFlags::DIFFUSE_REFLECTION
         }
     }
+    #[inline]
     fn f(&self, wo: Vec3, wi: Vec3, _mode: TransportMode) -> C {
         if !same_hemisphere(wo, wi) {
             return C::ZERO;
         }
         self.r * FRAC_1_PI
     }
+    #[inline]
     fn sample_f(
         &self,
         wo: Vec3,
@@ -63,6 +67,7 @@ impl<C: Colour> BxdfModel<C> for DiffuseBxdf<C> {
             BxdfFlags::DIFFUSE_REFLECTION,
         ))
     }
+    #[inline]
     fn pdf(&self, wo: Vec3, wi: Vec3, _mode: TransportMode, sample: SampleFlags) -> f32 {
         if !sample.reflection() || !same_hemisphere(wo, wi) {
             return 0.0;

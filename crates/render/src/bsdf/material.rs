@@ -196,7 +196,8 @@ impl Material {
 
     /// [`Material::bsdf_for`] given its shading frame, `frame =
     /// Frame::shading(ctx.ns, ctx.dpdus)` (which a caller may keep per
-    /// triangle, see [`crate::accel::Hit::shading`]).
+    /// triangle, see [`crate::accel::Hit::shading`]). Each branch builds
+    /// the BSDF where it is returned (no copy of the BxDF).
     #[inline]
     pub fn bsdf_in_frame<C: Colour>(
         &self,
@@ -204,7 +205,21 @@ impl Material {
         ctx: &BsdfContext,
         w: &C::Wavelengths,
     ) -> Bsdf<C> {
-        Bsdf::with_frame(frame, self.bxdf_for(ctx, w))
+        match self {
+            Material::Diffuse { .. } => Bsdf::with_frame(frame, self.bxdf_for(ctx, w)),
+            _ => self.bsdf_in_frame_other(frame, ctx, w),
+        }
+    }
+
+    /// [`Material::bsdf_in_frame`] of the materials other than diffuse.
+    #[inline(never)]
+    fn bsdf_in_frame_other<C: Colour>(
+        &self,
+        frame: Frame,
+        ctx: &BsdfContext,
+        w: &C::Wavelengths,
+    ) -> Bsdf<C> {
+        Bsdf::with_frame(frame, self.bxdf_for_other(ctx, w))
     }
 
     /// The local-frame BxDF at a shading point (textures evaluated there).
@@ -212,8 +227,24 @@ impl Material {
         self.bxdf_for(ctx, &())
     }
 
-    /// [`Material::bxdf_at`] in colour `C` at wavelengths `w`.
+    /// [`Material::bxdf_at`] in colour `C` at wavelengths `w`. A diffuse
+    /// material, the common case, is built inline; the others through one
+    /// call.
+    #[inline]
     pub fn bxdf_for<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bxdf<C> {
+        match self {
+            Material::Diffuse { reflectance } => {
+                let r = C::albedo(reflectance.evaluate(&ctx.texture_context()), w);
+                Bxdf::Diffuse(DiffuseBxdf::new(r))
+            }
+            _ => self.bxdf_for_other(ctx, w),
+        }
+    }
+
+    /// [`Material::bxdf_for`] of every material (called for those other
+    /// than diffuse).
+    #[inline(never)]
+    fn bxdf_for_other<C: Colour>(&self, ctx: &BsdfContext, w: &C::Wavelengths) -> Bxdf<C> {
         let fix_eta = |e: f32| if e > 0.0 && e.is_finite() { e } else { 1.0 };
         let tc = ctx.texture_context();
         let seed = ctx.seed;

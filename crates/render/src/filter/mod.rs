@@ -271,6 +271,7 @@ impl Filter {
 
     /// Importance-samples an offset with density proportional to `|f|`
     /// (piecewise constant for the tabulated filters) from `u` in `[0,1)^2`.
+    #[inline]
     pub fn sample(&self, u: [f32; 2]) -> FilterSample {
         match self {
             Filter::Box { radius } => FilterSample {

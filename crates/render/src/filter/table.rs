@@ -115,18 +115,24 @@ impl FilterTable {
     /// Samples an offset from `u` in `[0,1)^2`; returns the offset and
     /// `f(cell) / pdf`. A table that is zero everywhere is sampled uniformly
     /// with weight 0.
+    #[inline]
     pub fn sample(&self, u: [f32; 2]) -> ([f32; 2], f32) {
         let (j, dv) = sample_cdf(&self.marginal_cdf, &self.marginal_guide, f64::from(u[1]));
-        let row = &self.conditional_cdf[j * (self.nx + 1)..(j + 1) * (self.nx + 1)];
-        let row_guide = &self.conditional_guide[j * self.nx..(j + 1) * self.nx];
+        let (nx, ny) = (self.nx, self.ny);
+        let row = &self.conditional_cdf[j * (nx + 1)..][..nx + 1];
+        let row_guide = &self.conditional_guide[j * nx..][..nx];
         let (i, du) = sample_cdf(row, row_guide, f64::from(u[0]));
-        let fx = ((i as f64 + du) / self.nx as f64) as f32;
-        let fy = ((j as f64 + dv) / self.ny as f64) as f32;
+        // Cell counts fit in `u32` (at most 32 * 64 per axis), so these
+        // conversions give `i as f64` and `nx as f64` exactly, in one
+        // instruction each.
+        let fx = ((f64::from(i as u32) + du) / f64::from(nx as u32)) as f32;
+        let fy = ((f64::from(j as u32) + dv) / f64::from(ny as u32)) as f32;
+        let [rx, ry] = self.radius;
         let offset = [
-            (-self.radius[0] + 2.0 * self.radius[0] * fx).clamp(-self.radius[0], self.radius[0]),
-            (-self.radius[1] + 2.0 * self.radius[1] * fy).clamp(-self.radius[1], self.radius[1]),
+            (-rx + 2.0 * rx * fx).clamp(-rx, rx),
+            (-ry + 2.0 * ry * fy).clamp(-ry, ry),
         ];
-        let v = self.values[j * self.nx + i];
+        let v = self.values[j * nx + i];
         let weight = if v == 0.0 {
             0.0
         } else {
@@ -174,18 +180,27 @@ fn guide(cdf: &[f64]) -> Vec<u32> {
 /// Inverts a normalised CDF (`n + 1` entries) with its [`guide`]: the
 /// bucket `o` with `cdf[o] <= u < cdf[o+1]` and the position `du` in
 /// `[0,1)` inside it.
+#[inline(always)]
 fn sample_cdf(cdf: &[f64], guide: &[u32], u: f64) -> (usize, f64) {
     let n = cdf.len() - 1;
     // The number of entries `<= u` (a binary search's partition point),
     // walked to from the guide's start: any start reaches the same point,
     // as the CDF never decreases. NaN and negative `u` search directly.
     let end = if u >= 0.0 {
-        let g = ((u * n as f64) as usize).min(n - 1);
-        let mut p = guide[g] as usize;
-        while p > 0 && cdf[p - 1] > u {
+        // `u * n >= 0` here, so truncating through `i64` (one instruction)
+        // gives the `usize` truncation, saturating alike once `min`-ed.
+        let g = ((u * n as i64 as f64) as i64 as usize).min(n - 1);
+        let mut p = guide.get(g).map_or(0, |&p| p as usize);
+        while let Some(&c) = cdf.get(p.wrapping_sub(1)) {
+            if !(c > u) {
+                break;
+            }
             p -= 1;
         }
-        while p <= n && cdf[p] <= u {
+        while let Some(&c) = cdf.get(p) {
+            if !(c <= u) {
+                break;
+            }
             p += 1;
         }
         p
@@ -193,9 +208,10 @@ fn sample_cdf(cdf: &[f64], guide: &[u32], u: f64) -> (usize, f64) {
         cdf.partition_point(|&c| c <= u)
     };
     let o = end.saturating_sub(1).min(n - 1);
-    let width = cdf[o + 1] - cdf[o];
+    let (lo, hi) = (cdf[o], cdf[o + 1]);
+    let width = hi - lo;
     let du = if width > 0.0 {
-        ((u - cdf[o]) / width).clamp(0.0, 1.0)
+        ((u - lo) / width).clamp(0.0, 1.0)
     } else {
         0.0
     };
@@ -243,6 +259,81 @@ mod tests {
                 for g in [guide(cdf), shifted.clone()] {
                     assert_eq!(sample_cdf(cdf, &g, u).0, want, "{cdf:?} {u}");
                 }
+            }
+        }
+    }
+
+    /// The table's sampling written plainly (binary searches, `usize`
+    /// conversions): [`FilterTable::sample`] must give its values bit for bit.
+    fn plain_sample(t: &FilterTable, u: [f32; 2]) -> ([f32; 2], f32) {
+        let invert = |cdf: &[f64], u: f64| {
+            let n = cdf.len() - 1;
+            let o = cdf
+                .partition_point(|&c| c <= u)
+                .saturating_sub(1)
+                .min(n - 1);
+            let width = cdf[o + 1] - cdf[o];
+            let du = if width > 0.0 {
+                ((u - cdf[o]) / width).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (o, du)
+        };
+        let (j, dv) = invert(&t.marginal_cdf, f64::from(u[1]));
+        let row = &t.conditional_cdf[j * (t.nx + 1)..(j + 1) * (t.nx + 1)];
+        let (i, du) = invert(row, f64::from(u[0]));
+        let fx = ((i as f64 + du) / t.nx as f64) as f32;
+        let fy = ((j as f64 + dv) / t.ny as f64) as f32;
+        let r = t.radius;
+        let offset = [
+            (-r[0] + 2.0 * r[0] * fx).clamp(-r[0], r[0]),
+            (-r[1] + 2.0 * r[1] * fy).clamp(-r[1], r[1]),
+        ];
+        let v = t.values[j * t.nx + i];
+        let w = if v == 0.0 {
+            0.0
+        } else {
+            (t.abs_integral as f32).copysign(v)
+        };
+        (offset, w)
+    }
+
+    #[test]
+    fn sampling_equals_the_plain_inversion_bit_for_bit() {
+        let gauss = |x: f32, y: f32| (-2.0 * (x * x + y * y)).exp() - 0.0003;
+        let tables = [
+            FilterTable::new([2.0, 1.5], gauss),
+            FilterTable::new([1.0, 1.0], |x, _| if x < 0.0 { -1.0 } else { 3.0 }),
+            FilterTable::new([0.5, 0.5], |x, y| (x * y).max(0.0)),
+        ];
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let edges = [
+            0.0,
+            0.5,
+            1.0 - f32::EPSILON / 2.0,
+            1.0,
+            -0.25,
+            1.5,
+            f32::NAN,
+        ];
+        for t in &tables {
+            let mut us: Vec<[f32; 2]> = (0..20_000).map(|_| [next(), next()]).collect();
+            us.extend(
+                edges
+                    .iter()
+                    .flat_map(|&a| edges.iter().map(move |&b| [a, b])),
+            );
+            for u in us {
+                let (got, want) = (t.sample(u), plain_sample(t, u));
+                assert_eq!(got.0.map(f32::to_bits), want.0.map(f32::to_bits), "{u:?}");
+                assert_eq!(got.1.to_bits(), want.1.to_bits(), "{u:?}");
             }
         }
     }

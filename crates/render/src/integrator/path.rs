@@ -4,7 +4,7 @@ use super::{LightStrategy, PathIntegrator, PathStats, sqr};
 use crate::bsdf::material::BsdfContext;
 use crate::bsdf::{Bsdf, LayeredExitWeight, TransportMode, power_heuristic};
 use crate::light::LightSampleContext;
-use crate::math::{Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
+use crate::math::{Frame, Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
 use crate::scene::Scene;
 use crate::spectrum::{Colour, Rgb};
 use lowdisc::pixel::PixelSampler;
@@ -76,7 +76,7 @@ impl PathIntegrator {
         let lights = scene.lights();
         loop {
             stats.rays += 1;
-            let Some(sh) = scene.intersect(&ray) else {
+            let Some(hit) = scene.intersect_hit(&ray) else {
                 for &i in scene.infinite_lights() {
                     let light = &lights[i];
                     let le = light.le(&ray);
@@ -91,9 +91,10 @@ impl PathIntegrator {
                 }
                 break;
             };
-            let surf = sh.hit.surface;
+            let (material, light) = scene.material_and_light(hit.prim);
+            let surf = &hit.surface;
             let wo = -ray.d;
-            if let Some(li) = sh.light {
+            if let Some(li) = light {
                 let light = &lights[li as usize];
                 let le = light.l(surf.p, surf.ng, surf.uv, wo);
                 if !le.is_black() {
@@ -112,7 +113,7 @@ impl PathIntegrator {
             }
             depth += 1;
             let u = VertexSamples::draw(sampler);
-            let material = &scene.materials()[sh.material as usize];
+            let material = &scene.materials()[material as usize];
             let bsdf_ctx = BsdfContext {
                 ns: surf.ns,
                 dpdus: surf.dpdu,
@@ -121,10 +122,12 @@ impl PathIntegrator {
                 uv: surf.uv,
                 wo,
             };
-            let mut bsdf = match sh.hit.shading {
-                Some(frame) => material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w),
-                None => material.bsdf_for::<C>(&bsdf_ctx, w),
+            // The frame first, so that the BSDF is built in one place.
+            let frame = match hit.shading {
+                Some(frame) => frame,
+                None => Frame::shading(surf.ns, surf.dpdu),
             };
+            let mut bsdf = material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w);
             if self.layered_exit_weight != LayeredExitWeight::UNBIASED {
                 bsdf.bxdf.set_layered_exit_weight(self.layered_exit_weight);
             }
@@ -188,6 +191,7 @@ impl PathIntegrator {
     /// Next-event estimation: one light chosen by power, one sample of it,
     /// a shadow ray, weighted against BSDF sampling by the power heuristic.
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     fn sample_ld<C: Colour>(
         &self,
         scene: &Scene,

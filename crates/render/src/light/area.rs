@@ -183,6 +183,7 @@ impl DiffuseAreaLight {
         self.two_sided
     }
 
+    #[inline]
     pub(crate) fn l(&self, _p: Point3, n: Normal3, _uv: Point2, w: Vec3) -> Rgb {
         if !self.two_sided && n.dot(w) < 0.0 {
             Rgb::ZERO
@@ -191,7 +192,56 @@ impl DiffuseAreaLight {
         }
     }
 
+    /// [`super::Light::sample_li`] of this light (`u` already clamped to
+    /// `[0, 1)`), `None` unless the sample
+    /// [carries light](LightLiSample::carries_light).
+    #[inline(always)]
     pub(crate) fn sample_li(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
+        match &self.shape {
+            AreaShape::Triangle { p, n } => self.sample_triangle(p, *n, ctx, u),
+            _ => self.sample_li_curved(ctx, u),
+        }
+    }
+
+    /// [`Self::sample_li`] on a triangle: a point uniform by area (as
+    /// [`AreaShape::sample`]), its density converted to solid angle.
+    #[inline(always)]
+    fn sample_triangle(
+        &self,
+        p: &[Point3; 3],
+        n: Normal3,
+        ctx: &LightSampleContext,
+        u: [f32; 2],
+    ) -> Option<LightLiSample> {
+        if !(self.area > 0.0) {
+            return None;
+        }
+        let b = sample_uniform_triangle(Point2::new(u[0], u[1]));
+        let q = p[0] * b[0] + p[1] * b[1] + p[2] * b[2];
+        let d = q - ctx.p;
+        let d2 = d.length_squared();
+        if !(d2 > 0.0) {
+            return None;
+        }
+        let wi = d / d2.sqrt();
+        let cos_l = n.abs_dot(wi);
+        if !(cos_l > 0.0) {
+            return None;
+        }
+        let s = LightLiSample {
+            l: self.l(q, n, Point2::new(b[1], b[2]), -wi),
+            wi,
+            pdf: (1.0 / self.area) * d2 / cos_l,
+            p_light: q,
+            n_light: n,
+            is_delta: false,
+        };
+        s.carries_light().then_some(s)
+    }
+
+    /// [`Self::sample_li`] on a sphere (by solid angle from outside) or a disk.
+    #[inline(never)]
+    fn sample_li_curved(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
         let u = Point2::new(u[0], u[1]);
         let cone = match &self.shape {
             AreaShape::Sphere(s) => s.sample_solid_angle(ctx.p, u),
@@ -212,7 +262,7 @@ impl DiffuseAreaLight {
         if !(cos_l > 0.0) {
             return None;
         }
-        Some(LightLiSample {
+        let s = LightLiSample {
             l: self.l(ss.p, ss.n, ss.uv, -wi),
             wi,
             pdf: if solid_angle {
@@ -223,7 +273,8 @@ impl DiffuseAreaLight {
             p_light: ss.p,
             n_light: ss.n,
             is_delta: false,
-        })
+        };
+        s.carries_light().then_some(s)
     }
 
     pub(crate) fn pdf_li_hit(

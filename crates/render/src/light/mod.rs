@@ -93,6 +93,15 @@ pub struct LightLiSample {
     pub is_delta: bool,
 }
 
+impl LightLiSample {
+    /// True when the sample is usable: a positive, finite density and a
+    /// finite radiance that is not black.
+    #[inline]
+    pub(crate) fn carries_light(&self) -> bool {
+        self.pdf > 0.0 && self.pdf.is_finite() && !self.l.is_black() && self.l.is_finite()
+    }
+}
+
 /// Classification of a light for the integrator.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum LightType {
@@ -144,11 +153,24 @@ impl Light {
     /// Samples incident light at `ctx` from the 2D uniform sample `u`; `None`
     /// when the sample carries no light (zero radiance or density, or the
     /// point is outside a spot light's cone).
+    #[inline(always)]
     pub fn sample_li(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
         let u = [
             crate::sampling::clamp_unit(u[0]),
             crate::sampling::clamp_unit(u[1]),
         ];
+        match self {
+            // Area lights, the common case, check their samples themselves
+            // (inlined into the caller); every other light here.
+            Light::Area(l) => l.sample_li(ctx, u),
+            _ => self.sample_li_other(ctx, u),
+        }
+    }
+
+    /// [`Light::sample_li`] of the lights other than area lights, `u`
+    /// clamped to `[0, 1)`.
+    #[inline(never)]
+    fn sample_li_other(&self, ctx: &LightSampleContext, u: [f32; 2]) -> Option<LightLiSample> {
         let s = match self {
             Light::Point(l) => l.sample_li(ctx),
             Light::Spot(l) => l.sample_li(ctx),
@@ -157,7 +179,7 @@ impl Light {
             Light::UniformInfinite(l) => l.sample_li(ctx, u),
             Light::ImageInfinite(l) => l.sample_li(ctx, u),
         }?;
-        (s.pdf > 0.0 && s.pdf.is_finite() && !s.l.is_black() && s.l.is_finite()).then_some(s)
+        s.carries_light().then_some(s)
     }
 
     /// Solid-angle density with which [`Light::sample_li`] at `ctx` returns

@@ -54,12 +54,12 @@ impl Frame {
         }
     }
     /// World direction to local coordinates.
-    #[inline]
+    #[inline(always)]
     pub fn to_local(&self, v: Vec3) -> Vec3 {
         Vec3::new(v.dot(self.x), v.dot(self.y), v.dot(self.z))
     }
     /// Local coordinates to a world direction.
-    #[inline]
+    #[inline(always)]
     pub fn from_local(&self, v: Vec3) -> Vec3 {
         self.x * v.x + self.y * v.y + self.z * v.z
     }

@@ -35,11 +35,14 @@ impl Ray {
 /// the offset scales with the magnitude of `p`, and near the origin a small
 /// absolute offset is used instead. `ng` should be unit length.
 pub fn offset_ray_origin(p: Point3, ng: Normal3, w: Vec3) -> Point3 {
-    let n = if ng.dot(w) < 0.0 { -ng } else { ng };
+    // `n` is `-ng` when `ng · w < 0`, else `ng`: negation flips the sign
+    // bit, so one XOR of every lane does it, without a branch.
+    let flip = if ng.dot(w) < 0.0 { i32::MIN } else { 0 };
     // The three coordinates at once (lane 3 unused); per lane this is
     // `offset_coordinate` below, operation for operation.
     let pv = f32x4::from([p.x, p.y, p.z, 0.0]);
-    let nv = f32x4::from([n.x, n.y, n.z, 0.0]);
+    let ngv = cast::<f32x4, i32x4>(f32x4::from([ng.x, ng.y, ng.z, 0.0]));
+    let nv: f32x4 = cast(ngv ^ i32x4::splat(flip));
     let scaled = nv * f32x4::splat(INT_SCALE);
     // `as i32` maps NaN to 0 (`fast_trunc_int` does not); |scaled| <= 256
     // for a unit normal, so no lane saturates.

@@ -252,17 +252,31 @@ impl Scene {
     /// Closest hit along `ray` (any `t > 0`).
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<SceneHit> {
-        let hit = self.accel.intersect(ray, f32::INFINITY)?;
-        let (info, k) = match hit.prim {
+        let hit = self.intersect_hit(ray)?;
+        let (material, light) = self.material_and_light(hit.prim);
+        Some(SceneHit {
+            hit,
+            material,
+            light,
+        })
+    }
+    /// [`Scene::intersect`] without the lookups of
+    /// [`Scene::material_and_light`] (the path tracer makes them itself, so
+    /// that the hit is not copied into a [`SceneHit`]).
+    #[inline]
+    pub fn intersect_hit(&self, ray: &Ray) -> Option<Hit> {
+        self.accel.intersect(ray, f32::INFINITY)
+    }
+    /// The material index of primitive `prim` and the index of its area
+    /// light, if it emits ([`SceneHit::material`], [`SceneHit::light`]).
+    #[inline]
+    pub fn material_and_light(&self, prim: Prim) -> (u32, Option<u32>) {
+        let (info, k) = match prim {
             Prim::Triangle { mesh, tri } => (self.mesh_info[mesh as usize], tri),
             Prim::Sphere(i) => (self.sphere_info[i as usize], 0),
             Prim::Disk(i) => (self.disk_info[i as usize], 0),
         };
-        Some(SceneHit {
-            hit,
-            material: info.material,
-            light: info.first_light.map(|f| f + k),
-        })
+        (info.material, info.first_light.map(|f| f + k))
     }
     /// True when anything is hit in `(0, t_max)` (shadow rays).
     #[inline]

@@ -12,11 +12,19 @@
 //! * illuminant: the unbounded spectrum times the sRGB white, D65,
 //!   normalised to luminance 1 (`∫ ȳ D65 = 1`), so `(1, 1, 1)` is white light
 //!   of luminance 1, as pbrt-v4's lights after their photometric scaling.
+//!
+//! **Memo.** A table lookup costs hundreds of instructions and a render
+//! asks for the same few colours (constant reflectances, emission) at every
+//! vertex, so each thread keeps the spectra of the last [`MEMO_SLOTS`]
+//! inputs of [`albedo`] and of [`unbounded`], indexed by a hash of their
+//! bits: a hit returns exactly what the table gave for the same bits.
 
 use super::Rgb;
 use lowdisc_colour::cie::{LAMBDA_MIN, d65, y_integral};
 use lowdisc_colour::sigmoid::{SigmoidTable, eval};
+use std::cell::Cell;
 use std::sync::LazyLock;
+use std::thread::LocalKey;
 
 /// The resolution of the embedded table (its `z` axis and both ratio axes).
 pub const TABLE_RESOLUTION: usize = 64;
@@ -30,16 +38,74 @@ static TABLE: LazyLock<SigmoidTable> = LazyLock::new(|| {
 });
 
 /// D65 at every nanometre 360..=830, divided by `∫ ȳ D65`.
-static D65_UNIT: LazyLock<Vec<f32>> = LazyLock::new(|| {
+static D65_UNIT: LazyLock<[f32; 471]> = LazyLock::new(|| {
     let y = y_integral(|l| d65().eval(l));
-    (0..471)
-        .map(|i| d65().eval(LAMBDA_MIN + i as f32) / y)
-        .collect()
+    std::array::from_fn(|i| d65().eval(LAMBDA_MIN + i as f32) / y)
 });
 
 /// The uplift table.
 pub fn table() -> &'static SigmoidTable {
     &TABLE
+}
+
+/// Entries of each thread's memos of [`albedo`] and [`unbounded`] (a power
+/// of 2).
+pub const MEMO_SLOTS: usize = 64;
+
+/// One memo entry: the bits of an input colour and its spectrum.
+#[derive(Clone, Copy)]
+struct MemoEntry {
+    filled: bool,
+    key: [u32; 3],
+    value: RgbSpectrum,
+}
+
+/// A memo: [`MEMO_SLOTS`] entries, indexed by a hash of the input's bits.
+type Memo = [Cell<MemoEntry>; MEMO_SLOTS];
+
+thread_local! {
+    static ALBEDO_MEMO: Memo = const { [const { Cell::new(MemoEntry::EMPTY) }; MEMO_SLOTS] };
+    static UNBOUNDED_MEMO: Memo = const { [const { Cell::new(MemoEntry::EMPTY) }; MEMO_SLOTS] };
+}
+
+impl MemoEntry {
+    const EMPTY: MemoEntry = MemoEntry {
+        filled: false,
+        key: [0; 3],
+        value: RgbSpectrum {
+            coefficients: [0.0; 3],
+            scale: 0.0,
+        },
+    };
+}
+
+/// `f(rgb)` through this thread's `memo`: the value `f` gave for the same
+/// bits, or `f`'s value now (kept for the next call).
+#[inline]
+fn memoised(
+    memo: &'static LocalKey<Memo>,
+    rgb: Rgb,
+    f: impl FnOnce(Rgb) -> RgbSpectrum,
+) -> RgbSpectrum {
+    let key = rgb.to_array().map(f32::to_bits);
+    let hash = key[0].wrapping_mul(0x9e37_79b1)
+        ^ key[1].wrapping_mul(0x85eb_ca77)
+        ^ key[2].wrapping_mul(0xc2b2_ae3d);
+    let slot = (hash >> (32 - MEMO_SLOTS.trailing_zeros())) as usize;
+    memo.with(|memo| {
+        let entry = &memo[slot];
+        let e = entry.get();
+        if e.filled && e.key == key {
+            return e.value;
+        }
+        let value = f(rgb);
+        entry.set(MemoEntry {
+            filled: true,
+            key,
+            value,
+        });
+        value
+    })
 }
 
 /// A sigmoid-polynomial spectrum times a scale.
@@ -61,6 +127,11 @@ impl RgbSpectrum {
 
 /// The reflectance spectrum of `rgb` (channels clamped to `[0, 1]`).
 pub fn albedo(rgb: Rgb) -> RgbSpectrum {
+    memoised(&ALBEDO_MEMO, rgb, albedo_from_table)
+}
+
+/// [`albedo`] from the table, without the memo.
+fn albedo_from_table(rgb: Rgb) -> RgbSpectrum {
     RgbSpectrum {
         coefficients: TABLE.coefficients(rgb.clamp(0.0, 1.0).to_array()),
         scale: 1.0,
@@ -69,6 +140,11 @@ pub fn albedo(rgb: Rgb) -> RgbSpectrum {
 
 /// The spectrum of a non-negative `rgb` of any magnitude.
 pub fn unbounded(rgb: Rgb) -> RgbSpectrum {
+    memoised(&UNBOUNDED_MEMO, rgb, unbounded_from_table)
+}
+
+/// [`unbounded`] from the table, without the memo.
+fn unbounded_from_table(rgb: Rgb) -> RgbSpectrum {
     let rgb = rgb.clamp(0.0, f32::MAX);
     let scale = 2.0 * rgb.max_component();
     let unit = if scale > 0.0 { rgb / scale } else { Rgb::ZERO };
@@ -86,9 +162,12 @@ pub fn illuminant_d65(lambda: f32) -> f32 {
     if !(0.0..=470.0).contains(&x) {
         return 0.0;
     }
-    let i = (x as usize).min(469);
-    let t = x - i as f32;
-    D65_UNIT[i] + t * (D65_UNIT[i + 1] - D65_UNIT[i])
+    // `x` is in `[0, 470]`: truncating through `i32` is `x as usize`, in
+    // one instruction, and the table's fixed length needs no bounds checks.
+    let i = (x as i32 as usize).min(469);
+    let t = x - i as i32 as f32;
+    let d = &*D65_UNIT;
+    d[i] + t * (d[i + 1] - d[i])
 }
 
 #[cfg(test)]
@@ -124,6 +203,38 @@ mod tests {
         errors.sort_by(f32::total_cmp);
         let (p99, max) = (errors[989], errors[999]);
         assert!(p99 < 1e-3 && max < 1.5e-3, "p99 {p99}, max {max}");
+    }
+
+    #[test]
+    fn the_memos_return_the_tables_spectra_bit_for_bit() {
+        // Random colours (some above 1, for `unbounded`), each asked for
+        // twice, far apart and interleaved (so that slots are refilled and
+        // hit), plus greys, zeros of both signs, negatives and NaN.
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 40) as f32 / (1u64 << 22) as f32
+        };
+        let mut inputs: Vec<Rgb> = (0..500).map(|_| Rgb::new(next(), next(), next())).collect();
+        inputs.extend([
+            Rgb::splat(0.5),
+            Rgb::ZERO,
+            Rgb::new(-0.0, 0.0, 0.0),
+            Rgb::new(1.0, 0.0, -2.0),
+            Rgb::new(f32::NAN, 0.2, 0.1),
+        ]);
+        let bits = |s: RgbSpectrum| (s.coefficients.map(f32::to_bits), s.scale.to_bits());
+        for _ in 0..2 {
+            for (i, &rgb) in inputs.iter().enumerate() {
+                let other = inputs[(i * 7 + 3) % inputs.len()];
+                for c in [rgb, other] {
+                    assert_eq!(bits(albedo(c)), bits(albedo_from_table(c)), "{c:?}");
+                    assert_eq!(bits(unbounded(c)), bits(unbounded_from_table(c)), "{c:?}");
+                }
+            }
+        }
     }
 
     #[test]

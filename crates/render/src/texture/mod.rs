@@ -252,9 +252,19 @@ impl<T> From<T> for Texture<T> {
 }
 
 impl<T: TextureValue> Texture<T> {
-    /// The value at `ctx`.
+    /// The value at `ctx`. A constant is read inline; the other kinds go
+    /// through one call.
     #[inline]
     pub fn evaluate(&self, ctx: &TextureEvalContext) -> T {
+        match self {
+            Texture::Constant(v) => *v,
+            _ => self.evaluate_varying(ctx),
+        }
+    }
+
+    /// [`Self::evaluate`] of a texture that is not a constant.
+    #[inline(never)]
+    fn evaluate_varying(&self, ctx: &TextureEvalContext) -> T {
         match self {
             Texture::Constant(v) => *v,
             Texture::Image(t) => T::from_image(t, ctx),
