@@ -50,6 +50,52 @@ fn lanes(p: usize, first: usize, end: usize) -> u32 {
     ((1u32 << hi) - 1) & !((1u32 << lo) - 1)
 }
 
+/// The closest hit found so far in a closest-hit query, with its tie-break
+/// rule: a hit wins if it is nearer, or exactly as near and its primitive
+/// comes first in [`ShapeSet::prims`]. The result is thus the smallest
+/// (distance, primitive index) over all primitives hit, whatever the order
+/// in which the BVH visits them (and so whatever its shape or width).
+struct Closest {
+    /// Distance of the hit, or the query's `t_max` before the first one.
+    t: f32,
+    /// Index in [`ShapeSet::prims`] of the hit primitive; 0 before the first
+    /// hit, so that nothing at exactly `t_max` is taken (`(0, t_max)` is open).
+    id: u32,
+    /// Leaf-order position and primitive hit.
+    hit: Option<(u32, PrimHit)>,
+}
+
+impl Closest {
+    #[inline(always)]
+    fn new(t_max: f32) -> Self {
+        Closest {
+            t: t_max,
+            id: 0,
+            hit: None,
+        }
+    }
+    /// True if a hit at `t` on primitive `id` replaces the current one.
+    #[inline(always)]
+    fn beats(&self, t: f32, id: u32) -> bool {
+        t < self.t || (t == self.t && id < self.id)
+    }
+    #[inline(always)]
+    fn set(&mut self, k: u32, id: u32, hit: PrimHit) {
+        (self.t, self.id, self.hit) = (hit.t, id, Some((k, hit)));
+    }
+    /// The exclusive bound for a shape's own test that still admits a tie:
+    /// the next float above the current hit's distance (`t_max` itself
+    /// before the first hit).
+    #[inline(always)]
+    fn bound(&self) -> f32 {
+        if self.hit.is_some() && self.t.is_finite() {
+            f32::from_bits(self.t.to_bits() + 1)
+        } else {
+            self.t
+        }
+    }
+}
+
 impl Accel {
     /// Builds the BVH over every primitive of `shapes` (default options).
     pub fn build(shapes: ShapeSet) -> Accel {
@@ -114,37 +160,31 @@ impl Accel {
     }
 
     /// Tests the primitives at leaf-order positions `first..first + count`,
-    /// recording the closest hit closer than `t_max` in `best`.
+    /// recording in `best` the hit that [`Closest::beats`] the one found so
+    /// far; returns its distance when it changed.
     #[inline(always)]
-    fn leaf_closest(
-        &self,
-        first: u32,
-        count: u32,
-        ray: &Ray,
-        t_max: f32,
-        best: &mut Option<(u32, PrimHit)>,
-    ) -> Option<f32> {
+    fn leaf_closest(&self, first: u32, count: u32, ray: &Ray, best: &mut Closest) -> Option<f32> {
         let (first, end) = (first as usize, (first + count) as usize);
-        let mut t_max = t_max;
+        let order = self.bvh.prim_order();
         let mut found = None;
         for p in first / 4..end.div_ceil(4) {
             let range = lanes(p, first, end);
             let tri = range & self.tri_lanes[p] as u32;
             if tri != 0 {
-                let h = self.tris[p].intersect(ray, t_max);
+                let h = self.tris[p].intersect::<true>(ray, best.t);
                 let mut m = h.mask & tri;
                 while m != 0 {
                     let l = m.trailing_zeros() as usize;
                     m &= m - 1;
-                    if h.t[l] < t_max {
-                        t_max = h.t[l];
-                        found = Some(t_max);
+                    let k = 4 * p + l;
+                    if best.beats(h.t[l], order[k]) {
                         let hit = PrimHit {
                             t: h.t[l],
                             u: h.u[l],
                             v: h.v[l],
                         };
-                        *best = Some(((4 * p + l) as u32, hit));
+                        best.set(k as u32, order[k], hit);
+                        found = Some(best.t);
                     }
                 }
             }
@@ -152,10 +192,10 @@ impl Accel {
             while other != 0 {
                 let k = 4 * p + other.trailing_zeros() as usize;
                 other &= other - 1;
-                if let Some(h) = self.shapes.intersect(self.prims[k], ray, t_max) {
-                    t_max = h.t;
-                    found = Some(t_max);
-                    *best = Some((k as u32, h));
+                let h = self.shapes.intersect(self.prims[k], ray, best.bound());
+                if let Some(h) = h.filter(|h| best.beats(h.t, order[k])) {
+                    best.set(k as u32, order[k], h);
+                    found = Some(best.t);
                 }
             }
         }
@@ -170,7 +210,7 @@ impl Accel {
         (first / 4..end.div_ceil(4)).any(|p| {
             let range = lanes(p, first, end);
             let tri = range & self.tri_lanes[p] as u32;
-            if tri != 0 && self.tris[p].intersect(ray, t_max).mask & tri != 0 {
+            if tri != 0 && self.tris[p].intersect::<false>(ray, t_max).mask & tri != 0 {
                 return true;
             }
             let mut other = range & !tri;
@@ -188,11 +228,11 @@ impl Accel {
     /// Closest hit in `(0, t_max)` as (leaf-order position, primitive hit).
     #[inline]
     fn closest(&self, ray: &Ray, t_max: f32) -> Option<(u32, PrimHit)> {
-        let mut best = None;
-        self.bvh.closest_hit(ray, t_max, |first, count, tm| {
-            self.leaf_closest(first, count, ray, tm, &mut best)
+        let mut best = Closest::new(t_max);
+        self.bvh.closest_hit(ray, t_max, |first, count, _| {
+            self.leaf_closest(first, count, ray, &mut best)
         });
-        best
+        best.hit
     }
 
     /// Closest primitive hit in `(0, t_max)` without building the surface data.

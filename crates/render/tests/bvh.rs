@@ -21,6 +21,7 @@ fn soup(rng: &mut Rng, n: usize, size: f32, spread: f32) -> MeshData {
     m
 }
 
+/// The smallest (distance, primitive index) over all primitives hit.
 fn brute_force(set: &ShapeSet, ray: &Ray, t_max: f32) -> Option<(Prim, f32)> {
     let mut best: Option<(Prim, f32)> = None;
     for p in set.prims() {
@@ -41,12 +42,9 @@ fn check(set: &ShapeSet, accel: &Accel, rays: &[Ray], t_max: f32) -> usize {
         match (want, got) {
             (None, None) => {}
             (Some((wp, wt)), Some((gp, gh))) => {
-                // Same distance; the same primitive unless two tie exactly.
-                assert_eq!(wt, gh.t, "ray {i}: {r:?}");
-                if wp != gp {
-                    let other = set.intersect(wp, r, f32::INFINITY).unwrap();
-                    assert_eq!(other.t, gh.t, "ray {i}: different prims at different t");
-                }
+                // Same distance and, at exact ties, the primitive listed
+                // first (the tie-break rule).
+                assert_eq!((wt, wp), (gh.t, gp), "ray {i}: {r:?}");
                 hits += 1;
             }
             _ => panic!("ray {i}: brute force {want:?} vs bvh {got:?} ({r:?})"),
@@ -139,6 +137,37 @@ fn closest_hit_equals_brute_force_on_random_soups() {
         assert!(hits > 300, "seed {seed}: only {hits} hits: test too weak");
         let short = check(&set, &accel, &rays[..500], 3.0);
         assert!(short < hits);
+    }
+}
+
+#[test]
+fn exact_ties_go_to_the_primitive_listed_first() {
+    // Every triangle and sphere twice: the copies are hit at bit-identical
+    // distances, and the copy listed first in `ShapeSet::prims` must win
+    // whichever the BVH visits first. The second mesh lists the copies in
+    // reverse order, so that leaf order and listing order disagree.
+    let mut rng = Rng::new(11);
+    let data = soup(&mut rng, 400, 0.5, 3.0);
+    let mut reversed = data.clone();
+    reversed.indices.reverse();
+    let mut set = ShapeSet::new();
+    for d in [reversed, data] {
+        set.add_mesh(TriangleMesh::new(&Transform::IDENTITY, d, false).unwrap());
+    }
+    for _ in 0..10 {
+        let s = Sphere::new(Transform::translate(rng.vec(-3.0, 3.0)), 0.4, false).unwrap();
+        set.add_sphere(s.clone());
+        set.add_sphere(s);
+    }
+    for max_leaf_prims in [1, 4, 8] {
+        let opts = BuildOptions {
+            max_leaf_prims,
+            ..Default::default()
+        };
+        let accel = Accel::build_with(set.clone(), opts);
+        let rays: Vec<Ray> = (0..3000).map(|_| random_ray(&mut rng, 4.0)).collect();
+        let hits = check(&set, &accel, &rays, f32::INFINITY);
+        assert!(hits > 1000, "{hits}");
     }
 }
 

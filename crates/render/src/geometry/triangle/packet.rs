@@ -51,9 +51,10 @@ impl Tri4 {
     /// [`intersect_triangle`](super::intersect_triangle) on all four lanes at once, one `wide::f32x4`
     /// register per coordinate, with the same arithmetic in the same order
     /// per lane (no fused multiply-adds), so the results are bit-identical
-    /// to it.
+    /// to it. With `CLOSED`, hits at exactly `t_max` count too (closest-hit
+    /// queries break ties at equal distances by primitive).
     #[inline(always)]
-    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Hits4 {
+    pub fn intersect<const CLOSED: bool>(&self, ray: &Ray, t_max: f32) -> Hits4 {
         let splat = |v: Vec3| [v.x, v.y, v.z].map(f32x4::splat);
         let (o, d) = (splat(ray.o), splat(ray.d));
         let [p0, e1, e2] = [self.p0, self.e1, self.e2].map(|v| v.map(f32x4::from));
@@ -74,7 +75,11 @@ impl Tri4 {
             & v.cmp_ge(zero)
             & (u + v).cmp_le(f32x4::ONE)
             & t.cmp_gt(zero)
-            & t.cmp_lt(f32x4::splat(t_max));
+            & if CLOSED {
+                t.cmp_le(f32x4::splat(t_max))
+            } else {
+                t.cmp_lt(f32x4::splat(t_max))
+            };
         Hits4 {
             t: t.to_array(),
             u: u.to_array(),
