@@ -3,11 +3,15 @@
 mod common;
 
 use common::{Rng, random_ray};
+use lowdisc::catalog::SamplerName;
 use lowdisc_render::Accel;
 use lowdisc_render::bvh::{BuildOptions, Bvh, MAX_DEPTH, Node};
+use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::geometry::{Disk, MeshData, Prim, ShapeSet, Sphere, TriangleMesh};
+use lowdisc_render::math::lanes::LaneSet;
 use lowdisc_render::math::{Bounds3, Point3, Ray, Transform, Vec3};
 use lowdisc_render::mesh::read_ply;
+use lowdisc_render::render::{NoProgress, RenderOptions, render};
 
 fn soup(rng: &mut Rng, n: usize, size: f32, spread: f32) -> MeshData {
     let mut m = MeshData::default();
@@ -256,4 +260,26 @@ fn closest_hit_equals_brute_force_on_a_real_ply() {
         .collect();
     let hits = check(&set, &accel, &rays, f32::INFINITY);
     assert!(hits > 1500, "{hits}");
+}
+
+#[test]
+fn images_are_bit_identical_with_every_lane_set() {
+    // The widest lanes this CPU has (AVX2 on x86-64-v3) against the
+    // portable ones: the same image, bit for bit. (On a CPU without AVX2
+    // both are portable and the test only checks determinism.)
+    let scene = cornell_box([48, 32]).unwrap();
+    let opts = RenderOptions {
+        threads: Some(2),
+        ..RenderOptions::new(SamplerName::ZSobol, 3, 8)
+    };
+    let bits = |scene| {
+        let out = render(scene, &opts, &NoProgress).unwrap();
+        (out.image.pixels().iter())
+            .flat_map(|c| c.map(f32::to_bits))
+            .collect::<Vec<u32>>()
+    };
+    let widest = bits(&scene);
+    let portable = bits(&scene.clone().with_lanes(LaneSet::Portable));
+    assert_eq!(widest, portable, "lanes {}", LaneSet::detect().name());
+    assert!(widest.iter().any(|&b| b != 0));
 }
