@@ -163,7 +163,7 @@ fn exact_ties_go_to_the_primitive_listed_first() {
         set.add_sphere(s.clone());
         set.add_sphere(s);
     }
-    for max_leaf_prims in [1, 4, 8] {
+    for max_leaf_prims in [1, 4, 8, 20] {
         let opts = BuildOptions {
             max_leaf_prims,
             ..Default::default()
