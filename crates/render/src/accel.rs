@@ -59,8 +59,8 @@ struct Closest {
     /// Index in [`ShapeSet::prims`] of the hit primitive; 0 before the first
     /// hit, so that nothing at exactly `t_max` is taken (`(0, t_max)` is open).
     id: u32,
-    /// Index of the primitive hit (as `id`) and the hit.
-    hit: Option<(u32, PrimHit)>,
+    /// The hit on primitive `id`.
+    hit: Option<PrimHit>,
 }
 
 impl Closest {
@@ -79,7 +79,7 @@ impl Closest {
     }
     #[inline(always)]
     fn set(&mut self, id: u32, hit: PrimHit) {
-        (self.t, self.id, self.hit) = (hit.t, id, Some((id, hit)));
+        (self.t, self.id, self.hit) = (hit.t, id, Some(hit));
     }
     /// The exclusive bound for a shape's own test that still admits a tie:
     /// the next float above the current hit's distance (`t_max` itself
@@ -117,7 +117,7 @@ impl RunLanes for ClosestQuery<'_> {
             #[inline(always)]
             |first, count| accel.leaf_closest(l, &rl, ray, first, count, &mut best),
         );
-        best.hit
+        best.hit.map(|h| (best.id, h))
     }
 }
 
