@@ -1,15 +1,21 @@
 //! The scene's shapes with their BVH: ray queries returning full hits.
 //!
-//! Triangle vertices are stored in BVH leaf order as [`Tri4`] packets
-//! (packet `k / 4`, lane `k % 4` holds the primitive at leaf-order position
-//! `k`), so a leaf's triangles are tested four at a time without looking up
-//! the primitive kind; other shapes (spheres, disks) are tested one by one.
+//! Triangle vertices are stored as [`Tri8`] packets, one per group of
+//! [`LEAF_LANES`] slots of the 8-wide tree ([`Bvh::slots`]: each leaf
+//! starts a new group), so a leaf of up to eight triangles is tested with
+//! one packet, without looking up the primitive kind; other shapes
+//! (spheres, disks) in a packet's lanes are tested one by one. Queries run
+//! with the lanes [`LaneSet::detect`] chose when the accelerator was built
+//! (AVX2 or portable), with bit-identical results either way.
 
-use crate::bvh::{BuildOptions, Bvh, BvhStats};
-use crate::geometry::triangle::{FlatFrame, Tri4};
+use crate::bvh::{BuildOptions, Bvh, BvhStats, EMPTY_SLOT, LEAF_LANES};
+use crate::geometry::triangle::{FlatFrame, PACKET_LANES, RayLanes, Tri8};
 use crate::geometry::{Prim, PrimHit, ShapeSet, SurfaceHit};
+use crate::math::lanes::{LaneSet, Lanes, RunLanes};
 use crate::math::{Bounds3, Frame, Ray};
 use rayon::prelude::*;
+
+const _: () = assert!(PACKET_LANES == LEAF_LANES, "one packet per leaf group");
 
 /// A ray hit: which primitive, and the surface there.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -30,24 +36,119 @@ pub struct Hit {
 pub struct Accel {
     shapes: ShapeSet,
     bvh: Bvh,
-    /// Primitives in leaf order.
+    /// Every primitive, in [`ShapeSet::prims`] order (the BVH's input order).
     prims: Vec<Prim>,
-    /// Triangle vertices in leaf order, four per packet (zero for other shapes).
-    tris: Vec<Tri4>,
-    /// Per packet: bit `l` set when lane `l` is a triangle.
-    tri_lanes: Vec<u8>,
-    /// In leaf order: the triangle's [`FlatFrame`], if it has one.
+    /// Per group of [`LEAF_LANES`] slots: its triangles (zero in other lanes).
+    tris: Vec<Tri8>,
+    /// Per group of slots: bit `l` set when lane `l` is another shape.
+    others: Vec<u8>,
+    /// Per primitive (input order): the triangle's [`FlatFrame`], if it has one.
     frames: Vec<Option<FlatFrame>>,
     bounds: Bounds3,
+    lanes: LaneSet,
 }
 
-/// Bit mask of the lanes of packet `p` inside the leaf-order range `first..end`.
+/// The closest hit found so far in a closest-hit query, with its tie-break
+/// rule: a hit wins if it is nearer, or exactly as near and its primitive
+/// comes first in [`ShapeSet::prims`]. The result is thus the smallest
+/// (distance, primitive index) over all primitives hit, whatever the order
+/// in which the BVH visits them (and so whatever its shape or width).
+struct Closest {
+    /// Distance of the hit, or the query's `t_max` before the first one.
+    t: f32,
+    /// Index in [`ShapeSet::prims`] of the hit primitive; 0 before the first
+    /// hit, so that nothing at exactly `t_max` is taken (`(0, t_max)` is open).
+    id: u32,
+    /// The hit on primitive `id`.
+    hit: Option<PrimHit>,
+}
+
+impl Closest {
+    #[inline(always)]
+    fn new(t_max: f32) -> Self {
+        Closest {
+            t: t_max,
+            id: 0,
+            hit: None,
+        }
+    }
+    /// True if a hit at `t` on primitive `id` replaces the current one.
+    #[inline(always)]
+    fn beats(&self, t: f32, id: u32) -> bool {
+        t < self.t || (t == self.t && id < self.id)
+    }
+    #[inline(always)]
+    fn set(&mut self, id: u32, hit: PrimHit) {
+        (self.t, self.id, self.hit) = (hit.t, id, Some(hit));
+    }
+    /// The exclusive bound for a shape's own test that still admits a tie:
+    /// the next float above the current hit's distance (`t_max` itself
+    /// before the first hit).
+    #[inline(always)]
+    fn bound(&self) -> f32 {
+        if self.hit.is_some() && self.t.is_finite() {
+            f32::from_bits(self.t.to_bits() + 1)
+        } else {
+            self.t
+        }
+    }
+}
+
+/// A closest-hit query, run with some [`Lanes`].
+struct ClosestQuery<'a> {
+    accel: &'a Accel,
+    ray: &'a Ray,
+    t_max: f32,
+}
+
+impl RunLanes for ClosestQuery<'_> {
+    type Output = Option<(u32, PrimHit)>;
+    #[inline(always)]
+    fn run<L: Lanes>(self, l: L) -> Self::Output {
+        let (accel, ray) = (self.accel, self.ray);
+        let rl = RayLanes::new(l, ray);
+        let mut best = Closest::new(self.t_max);
+        // Closures are inlined by force: compiled on their own, they would
+        // lack the lane set's target features (see `Tri8::intersect`).
+        accel.bvh.closest_hit(
+            l,
+            ray,
+            self.t_max,
+            #[inline(always)]
+            |first, count| accel.leaf_closest(l, &rl, ray, first, count, &mut best),
+        );
+        best.hit.map(|h| (best.id, h))
+    }
+}
+
+/// An any-hit query, run with some [`Lanes`].
+struct AnyQuery<'a> {
+    accel: &'a Accel,
+    ray: &'a Ray,
+    t_max: f32,
+}
+
+impl RunLanes for AnyQuery<'_> {
+    type Output = bool;
+    #[inline(always)]
+    fn run<L: Lanes>(self, l: L) -> bool {
+        let (accel, ray, t_max) = (self.accel, self.ray, self.t_max);
+        let rl = RayLanes::new(l, ray);
+        accel.bvh.any_hit(
+            l,
+            ray,
+            t_max,
+            #[inline(always)]
+            |first, count| accel.leaf_any(l, &rl, ray, first, count, t_max),
+        )
+    }
+}
+
+/// The packets of the slots `first..first + count` (`first` a multiple of
+/// [`LEAF_LANES`]).
 #[inline(always)]
-fn lanes(p: usize, first: usize, end: usize) -> u32 {
-    let base = 4 * p;
-    let lo = first.saturating_sub(base);
-    let hi = (end - base).min(4);
-    ((1u32 << hi) - 1) & !((1u32 << lo) - 1)
+fn packets(first: u32, count: u32) -> std::ops::Range<usize> {
+    first as usize / LEAF_LANES..(first + count).div_ceil(LEAF_LANES as u32) as usize
 }
 
 impl Accel {
@@ -58,22 +159,25 @@ impl Accel {
 
     /// Builds the BVH over every primitive of `shapes`.
     pub fn build_with(shapes: ShapeSet, opts: BuildOptions) -> Accel {
-        let all = shapes.prims();
-        let boxes: Vec<Bounds3> = all.par_iter().map(|&p| shapes.bounds(p)).collect();
+        let prims = shapes.prims();
+        let boxes: Vec<Bounds3> = prims.par_iter().map(|&p| shapes.bounds(p)).collect();
         let bounds = boxes.iter().fold(Bounds3::EMPTY, |a, b| a.union(b));
         let bvh = Bvh::build_with(&boxes, opts);
-        let prims: Vec<Prim> = bvh.prim_order().iter().map(|&i| all[i as usize]).collect();
-        let (tris, tri_lanes) = prims
-            .par_chunks(4)
-            .map(|chunk| {
-                let (mut packet, mut mask) = (Tri4::default(), 0u8);
-                for (lane, p) in chunk.iter().enumerate() {
-                    if let Prim::Triangle { mesh, tri } = *p {
-                        packet.set(lane, shapes.meshes[mesh as usize].vertices(tri as usize));
-                        mask |= 1 << lane;
+        let (tris, others) = bvh
+            .slots()
+            .par_chunks(LEAF_LANES)
+            .map(|group| {
+                let (mut packet, mut others) = (Tri8::default(), 0u8);
+                for (lane, &id) in group.iter().enumerate() {
+                    match prims.get(id as usize) {
+                        Some(&Prim::Triangle { mesh, tri }) => {
+                            packet.set(lane, shapes.meshes[mesh as usize].vertices(tri as usize));
+                        }
+                        Some(_) => others |= 1 << lane,
+                        None => debug_assert_eq!(id, EMPTY_SLOT),
                     }
                 }
-                (packet, mask)
+                (packet, others)
             })
             .unzip();
         let frames = (prims.par_iter())
@@ -90,12 +194,23 @@ impl Accel {
             bvh,
             prims,
             tris,
-            tri_lanes,
+            others,
             frames,
             bounds,
+            lanes: LaneSet::detect(),
         }
     }
 
+    /// The same accelerator running its queries with `lanes` (tests compare
+    /// lane sets; [`Accel::build`] takes the widest the CPU has).
+    pub fn with_lanes(mut self, lanes: LaneSet) -> Accel {
+        self.lanes = lanes;
+        self
+    }
+    /// The lanes queries run with.
+    pub fn lanes(&self) -> LaneSet {
+        self.lanes
+    }
     /// The shapes.
     pub fn shapes(&self) -> &ShapeSet {
         &self.shapes
@@ -113,100 +228,104 @@ impl Accel {
         self.bounds
     }
 
-    /// Tests the primitives at leaf-order positions `first..first + count`,
-    /// recording the closest hit closer than `t_max` in `best`.
+    /// Tests the primitives in slots `first..first + count`, recording in
+    /// `best` the hit that [`Closest::beats`] the one found so far; returns
+    /// its distance when it changed.
     #[inline(always)]
-    fn leaf_closest(
+    fn leaf_closest<L: Lanes>(
         &self,
+        l: L,
+        rl: &RayLanes<L>,
+        ray: &Ray,
         first: u32,
         count: u32,
-        ray: &Ray,
-        t_max: f32,
-        best: &mut Option<(u32, PrimHit)>,
+        best: &mut Closest,
     ) -> Option<f32> {
-        let (first, end) = (first as usize, (first + count) as usize);
-        let mut t_max = t_max;
+        let slots = self.bvh.slots();
         let mut found = None;
-        for p in first / 4..end.div_ceil(4) {
-            let range = lanes(p, first, end);
-            let tri = range & self.tri_lanes[p] as u32;
-            if tri != 0 {
-                let h = self.tris[p].intersect(ray, t_max);
-                let mut m = h.mask & tri;
-                while m != 0 {
-                    let l = m.trailing_zeros() as usize;
-                    m &= m - 1;
-                    if h.t[l] < t_max {
-                        t_max = h.t[l];
-                        found = Some(t_max);
-                        let hit = PrimHit {
-                            t: h.t[l],
-                            u: h.u[l],
-                            v: h.v[l],
-                        };
-                        *best = Some(((4 * p + l) as u32, hit));
-                    }
+        for p in packets(first, count) {
+            let ids = &slots[LEAF_LANES * p..][..LEAF_LANES];
+            let h = self.tris[p].intersect::<L, true>(l, rl, best.t);
+            let mut m = h.mask;
+            while m != 0 {
+                let lane = m.trailing_zeros() as usize;
+                m &= m - 1;
+                if best.beats(h.t[lane], ids[lane]) {
+                    let hit = PrimHit {
+                        t: h.t[lane],
+                        u: h.u[lane],
+                        v: h.v[lane],
+                    };
+                    best.set(ids[lane], hit);
+                    found = Some(best.t);
                 }
             }
-            let mut other = range & !tri;
+            let mut other = self.others[p] as u32;
             while other != 0 {
-                let k = 4 * p + other.trailing_zeros() as usize;
+                let id = ids[other.trailing_zeros() as usize];
                 other &= other - 1;
-                if let Some(h) = self.shapes.intersect(self.prims[k], ray, t_max) {
-                    t_max = h.t;
-                    found = Some(t_max);
-                    *best = Some((k as u32, h));
+                let h = self
+                    .shapes
+                    .intersect(self.prims[id as usize], ray, best.bound());
+                if let Some(h) = h.filter(|h| best.beats(h.t, id)) {
+                    best.set(id, h);
+                    found = Some(best.t);
                 }
             }
         }
         found
     }
 
-    /// True if any primitive at leaf-order positions `first..first + count`
-    /// is hit in `(0, t_max)`.
+    /// True if any primitive in slots `first..first + count` is hit in
+    /// `(0, t_max)`.
     #[inline(always)]
-    fn leaf_any(&self, first: u32, count: u32, ray: &Ray, t_max: f32) -> bool {
-        let (first, end) = (first as usize, (first + count) as usize);
-        (first / 4..end.div_ceil(4)).any(|p| {
-            let range = lanes(p, first, end);
-            let tri = range & self.tri_lanes[p] as u32;
-            if tri != 0 && self.tris[p].intersect(ray, t_max).mask & tri != 0 {
+    fn leaf_any<L: Lanes>(
+        &self,
+        l: L,
+        rl: &RayLanes<L>,
+        ray: &Ray,
+        first: u32,
+        count: u32,
+        t_max: f32,
+    ) -> bool {
+        let slots = self.bvh.slots();
+        for p in packets(first, count) {
+            if self.tris[p].any(l, rl, t_max) {
                 return true;
             }
-            let mut other = range & !tri;
+            let mut other = self.others[p] as u32;
             while other != 0 {
-                let k = 4 * p + other.trailing_zeros() as usize;
+                let id = slots[LEAF_LANES * p + other.trailing_zeros() as usize];
                 other &= other - 1;
-                if self.shapes.intersect(self.prims[k], ray, t_max).is_some() {
+                if self
+                    .shapes
+                    .intersect(self.prims[id as usize], ray, t_max)
+                    .is_some()
+                {
                     return true;
                 }
             }
-            false
-        })
+        }
+        false
     }
 
-    /// Closest hit in `(0, t_max)` as (leaf-order position, primitive hit).
+    /// Closest hit in `(0, t_max)` as (primitive index, primitive hit).
     #[inline]
     fn closest(&self, ray: &Ray, t_max: f32) -> Option<(u32, PrimHit)> {
-        let mut best = None;
-        self.bvh.closest_hit(ray, t_max, |first, count, tm| {
-            self.leaf_closest(first, count, ray, tm, &mut best)
-        });
-        best
+        let accel = self;
+        self.lanes.run(ClosestQuery { accel, ray, t_max })
     }
 
     /// Closest primitive hit in `(0, t_max)` without building the surface data.
     pub fn intersect_prim(&self, ray: &Ray, t_max: f32) -> Option<(Prim, PrimHit)> {
-        let (k, h) = self.closest(ray, t_max)?;
-        Some((self.prims[k as usize], h))
+        let (id, h) = self.closest(ray, t_max)?;
+        Some((self.prims[id as usize], h))
     }
 
     /// Closest hit in `(0, t_max)` with full surface information.
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        let (k, h) = self.closest(ray, t_max)?;
-        let k = k as usize;
-        let prim = self.prims[k];
-        let frame = self.frames[k];
+        let (id, h) = self.closest(ray, t_max)?;
+        let (prim, frame) = (self.prims[id as usize], self.frames[id as usize]);
         let surface = match prim {
             Prim::Triangle { mesh, tri } => {
                 let (m, tri) = (&self.shapes.meshes[mesh as usize], tri as usize);
@@ -223,8 +342,7 @@ impl Accel {
 
     /// True if anything is hit in `(0, t_max)` (shadow rays).
     pub fn intersect_p(&self, ray: &Ray, t_max: f32) -> bool {
-        self.bvh.any_hit(ray, t_max, |first, count, tm| {
-            self.leaf_any(first, count, ray, tm)
-        })
+        let accel = self;
+        self.lanes.run(AnyQuery { accel, ray, t_max })
     }
 }

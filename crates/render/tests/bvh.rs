@@ -3,11 +3,15 @@
 mod common;
 
 use common::{Rng, random_ray};
+use lowdisc::catalog::SamplerName;
 use lowdisc_render::Accel;
 use lowdisc_render::bvh::{BuildOptions, Bvh, MAX_DEPTH, Node};
+use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::geometry::{Disk, MeshData, Prim, ShapeSet, Sphere, TriangleMesh};
+use lowdisc_render::math::lanes::LaneSet;
 use lowdisc_render::math::{Bounds3, Point3, Ray, Transform, Vec3};
 use lowdisc_render::mesh::read_ply;
+use lowdisc_render::render::{NoProgress, RenderOptions, render};
 
 fn soup(rng: &mut Rng, n: usize, size: f32, spread: f32) -> MeshData {
     let mut m = MeshData::default();
@@ -21,6 +25,7 @@ fn soup(rng: &mut Rng, n: usize, size: f32, spread: f32) -> MeshData {
     m
 }
 
+/// The smallest (distance, primitive index) over all primitives hit.
 fn brute_force(set: &ShapeSet, ray: &Ray, t_max: f32) -> Option<(Prim, f32)> {
     let mut best: Option<(Prim, f32)> = None;
     for p in set.prims() {
@@ -41,12 +46,9 @@ fn check(set: &ShapeSet, accel: &Accel, rays: &[Ray], t_max: f32) -> usize {
         match (want, got) {
             (None, None) => {}
             (Some((wp, wt)), Some((gp, gh))) => {
-                // Same distance; the same primitive unless two tie exactly.
-                assert_eq!(wt, gh.t, "ray {i}: {r:?}");
-                if wp != gp {
-                    let other = set.intersect(wp, r, f32::INFINITY).unwrap();
-                    assert_eq!(other.t, gh.t, "ray {i}: different prims at different t");
-                }
+                // Same distance and, at exact ties, the primitive listed
+                // first (the tie-break rule).
+                assert_eq!((wt, wp), (gh.t, gp), "ray {i}: {r:?}");
                 hits += 1;
             }
             _ => panic!("ray {i}: brute force {want:?} vs bvh {got:?} ({r:?})"),
@@ -143,6 +145,37 @@ fn closest_hit_equals_brute_force_on_random_soups() {
 }
 
 #[test]
+fn exact_ties_go_to_the_primitive_listed_first() {
+    // Every triangle and sphere twice: the copies are hit at bit-identical
+    // distances, and the copy listed first in `ShapeSet::prims` must win
+    // whichever the BVH visits first. The second mesh lists the copies in
+    // reverse order, so that leaf order and listing order disagree.
+    let mut rng = Rng::new(11);
+    let data = soup(&mut rng, 400, 0.5, 3.0);
+    let mut reversed = data.clone();
+    reversed.indices.reverse();
+    let mut set = ShapeSet::new();
+    for d in [reversed, data] {
+        set.add_mesh(TriangleMesh::new(&Transform::IDENTITY, d, false).unwrap());
+    }
+    for _ in 0..10 {
+        let s = Sphere::new(Transform::translate(rng.vec(-3.0, 3.0)), 0.4, false).unwrap();
+        set.add_sphere(s.clone());
+        set.add_sphere(s);
+    }
+    for max_leaf_prims in [1, 4, 8, 20] {
+        let opts = BuildOptions {
+            max_leaf_prims,
+            ..Default::default()
+        };
+        let accel = Accel::build_with(set.clone(), opts);
+        let rays: Vec<Ray> = (0..3000).map(|_| random_ray(&mut rng, 4.0)).collect();
+        let hits = check(&set, &accel, &rays, f32::INFINITY);
+        assert!(hits > 1000, "{hits}");
+    }
+}
+
+#[test]
 fn axis_aligned_and_degenerate_rays() {
     // A grid of unit-cube-aligned triangles: rays with zero direction
     // components, rays in slab planes, and NaN rays.
@@ -227,4 +260,26 @@ fn closest_hit_equals_brute_force_on_a_real_ply() {
         .collect();
     let hits = check(&set, &accel, &rays, f32::INFINITY);
     assert!(hits > 1500, "{hits}");
+}
+
+#[test]
+fn images_are_bit_identical_with_every_lane_set() {
+    // The widest lanes this CPU has (AVX2 on x86-64-v3) against the
+    // portable ones: the same image, bit for bit. (On a CPU without AVX2
+    // both are portable and the test only checks determinism.)
+    let scene = cornell_box([48, 32]).unwrap();
+    let opts = RenderOptions {
+        threads: Some(2),
+        ..RenderOptions::new(SamplerName::ZSobol, 3, 8)
+    };
+    let bits = |scene| {
+        let out = render(scene, &opts, &NoProgress).unwrap();
+        (out.image.pixels().iter())
+            .flat_map(|c| c.map(f32::to_bits))
+            .collect::<Vec<u32>>()
+    };
+    let widest = bits(&scene);
+    let portable = bits(&scene.clone().with_lanes(LaneSet::Portable));
+    assert_eq!(widest, portable, "lanes {}", LaneSet::detect().name());
+    assert!(widest.iter().any(|&b| b != 0));
 }

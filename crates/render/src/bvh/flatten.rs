@@ -1,7 +1,7 @@
 //! Depth-first flattening of the build tree, and the tree's SAH cost.
 
 use super::Node;
-use super::build::{BuildNode, TRAVERSAL_COST};
+use super::build::{BuildNode, BuildOptions, leaf_cost};
 use crate::math::{Bounds3, Vec3};
 
 /// Appends the subtree depth-first to `nodes`, making child indices absolute.
@@ -38,8 +38,9 @@ pub(super) fn flatten(node: &BuildNode, nodes: &mut Vec<Node>) {
     }
 }
 
-/// Sum over nodes of `area * cost` for pbrt's SAH model, divided by the root area.
-pub(super) fn sah_cost(nodes: &[Node]) -> f64 {
+/// Sum over nodes of `area * cost` for the build's SAH model (see
+/// [`BuildOptions`]), divided by the root area.
+pub(super) fn sah_cost(nodes: &[Node], opts: BuildOptions) -> f64 {
     let area = |n: &Node| {
         Bounds3 {
             min: Vec3::from_array(n.min),
@@ -59,9 +60,9 @@ pub(super) fn sah_cost(nodes: &[Node]) -> f64 {
         .map(|n| {
             area(n)
                 * if n.is_leaf() {
-                    n.count as f64
+                    leaf_cost(n.count as u32) as f64
                 } else {
-                    TRAVERSAL_COST as f64
+                    opts.traversal_cost as f64
                 }
         })
         .sum::<f64>()

@@ -1,20 +1,22 @@
 //! Bounding volume hierarchy over abstract primitives given by their boxes.
 //!
-//! * [`Bvh::build`]: binned SAH (16 bins along the centroid box's longest
-//!   axis, pbrt's cost model: traversal 1/2, intersection 1 per primitive),
-//!   forking with rayon on subtrees of more than [`BuildOptions::parallel_threshold`]
+//! * [`Bvh::build`]: binned SAH along the centroid box's longest axis,
+//!   with a cost model for packets (a leaf costs one unit per
+//!   [`LEAF_LANES`] primitives, i.e. per packet its caller tests, and a
+//!   binary interior node [`BuildOptions`]'s traversal cost), forking with
+//!   rayon on subtrees of more than [`BuildOptions::parallel_threshold`]
 //!   primitives; median split as fallback and below the depth where SAH
 //!   could degenerate.
 //! * Layout: compact 32-byte [`Node`]s in depth-first order (first child
 //!   follows its parent; the node stores the second child's index), then
-//!   collapsed into a 4-wide tree of [`Node4`]s (`wide`) for traversal.
-//! * [`Bvh::closest_hit`] and [`Bvh::any_hit`] traverse the 4-wide tree,
-//!   testing four boxes at once with a robust slab test (infinite inverse
-//!   directions, NaN from `0 * inf` treated as inside), near child first,
-//!   and leave primitive tests to a caller closure called per leaf, so the
-//!   BVH knows nothing about shapes. Primitives are addressed by their
-//!   position in [`Bvh::prim_order`] (leaf order), so callers can store
-//!   primitive data in that order for locality.
+//!   collapsed into an 8-wide tree of [`Node8`]s (`wide`) for traversal,
+//!   whose leaves address [`Bvh::slots`]: each leaf's primitives from a
+//!   multiple of [`LEAF_LANES`], so one packet per leaf.
+//! * [`Bvh::closest_hit`] and [`Bvh::any_hit`] traverse the 8-wide tree,
+//!   testing eight boxes at once ([`crate::math::lanes`]) with a robust
+//!   slab test (infinite inverse directions, NaN from `0 * inf` treated as
+//!   inside), near child first, and leave primitive tests to a caller
+//!   closure called per leaf, so the BVH knows nothing about shapes.
 
 mod build;
 mod flatten;
@@ -24,7 +26,7 @@ mod traverse;
 mod wide;
 
 pub use build::BuildOptions;
-pub use wide::{ChildRef, INTERIOR, Node4};
+pub use wide::{ChildRef, EMPTY_SLOT, INTERIOR, LEAF_LANES, Node8, WIDTH};
 
 use crate::math::Bounds3;
 use std::time::{Duration, Instant};
@@ -63,15 +65,16 @@ pub struct BvhStats {
     pub prims: usize,
     /// Total nodes of the binary tree.
     pub nodes: usize,
-    /// Nodes of the 4-wide tree used for traversal.
-    pub nodes4: usize,
+    /// Nodes of the 8-wide tree used for traversal.
+    pub nodes8: usize,
     /// Leaf nodes.
     pub leaves: usize,
     /// Depth of the deepest leaf (the root has depth 0).
     pub max_depth: usize,
     /// Average primitives per leaf.
     pub avg_leaf_size: f64,
-    /// SAH cost of the tree relative to the root box (pbrt's cost model).
+    /// SAH cost of the tree relative to the root box (the build's cost
+    /// model: see [`BuildOptions`]).
     pub sah_cost: f64,
     /// Wall-clock build time (excluding computing primitive boxes).
     pub build_time: Duration,
@@ -81,10 +84,10 @@ impl std::fmt::Display for BvhStats {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "BVH: {} prims, {} nodes ({} 4-wide), {} leaves, max depth {}, {:.2} prims/leaf, SAH cost {:.2}, built in {:.1} ms",
+            "BVH: {} prims, {} nodes ({} 8-wide), {} leaves, max depth {}, {:.2} prims/leaf, SAH cost {:.2}, built in {:.1} ms",
             self.prims,
             self.nodes,
-            self.nodes4,
+            self.nodes8,
             self.leaves,
             self.max_depth,
             self.avg_leaf_size,
@@ -98,11 +101,12 @@ impl std::fmt::Display for BvhStats {
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
     nodes: Vec<Node>,
-    nodes4: Vec<Node4>,
-    root4: ChildRef,
-    /// Levels of `nodes4` on the longest root-to-leaf path.
-    levels4: usize,
+    nodes8: Vec<Node8>,
+    root8: ChildRef,
+    /// Levels of `nodes8` on the longest root-to-leaf path.
+    levels8: usize,
     prim_order: Vec<u32>,
+    slots: Vec<u32>,
     stats: BvhStats,
 }
 
@@ -114,22 +118,29 @@ impl Bvh {
     pub fn nodes(&self) -> &[Node] {
         &self.nodes
     }
-    /// The 4-wide nodes (empty when the root is a leaf).
-    pub fn nodes4(&self) -> &[Node4] {
-        &self.nodes4
+    /// The 8-wide nodes (empty when the root is a leaf).
+    pub fn nodes8(&self) -> &[Node8] {
+        &self.nodes8
     }
-    /// The root of the 4-wide tree: node 0 of [`Bvh::nodes4`], or a leaf.
-    pub fn root4(&self) -> ChildRef {
-        self.root4
+    /// The root of the 8-wide tree: node 0 of [`Bvh::nodes8`], or a leaf.
+    pub fn root8(&self) -> ChildRef {
+        self.root8
     }
-    /// Levels of [`Node4`]s on the longest root-to-leaf path (0 when the
+    /// Levels of [`Node8`]s on the longest root-to-leaf path (0 when the
     /// root is a leaf).
-    pub fn levels4(&self) -> usize {
-        self.levels4
+    pub fn levels8(&self) -> usize {
+        self.levels8
     }
-    /// `prim_order()[k]` is the input index of the `k`-th primitive in leaf order.
+    /// `prim_order()[k]` is the input index of the `k`-th primitive in leaf
+    /// order (the binary [`Bvh::nodes`]' leaves index it).
     pub fn prim_order(&self) -> &[u32] {
         &self.prim_order
+    }
+    /// The leaves of the 8-wide tree, each from a multiple of
+    /// [`LEAF_LANES`]: per slot the input index of a primitive, or
+    /// [`EMPTY_SLOT`] after a leaf's last one.
+    pub fn slots(&self) -> &[u32] {
+        &self.slots
     }
     /// Build statistics.
     pub fn stats(&self) -> &BvhStats {
@@ -150,24 +161,25 @@ impl Bvh {
         let Some((nodes, prim_order, summary)) = build::build_binary(prim_bounds, opts) else {
             return Bvh::default();
         };
-        let wide = wide::collapse(&nodes);
+        let wide = wide::collapse(&nodes, &prim_order);
         let build_time = start.elapsed();
         let stats = BvhStats {
             prims: prim_order.len(),
             nodes: summary.nodes,
-            nodes4: wide.nodes.len(),
+            nodes8: wide.nodes.len(),
             leaves: summary.leaves,
             max_depth: summary.max_depth,
             avg_leaf_size: prim_order.len() as f64 / summary.leaves as f64,
-            sah_cost: flatten::sah_cost(&nodes),
+            sah_cost: flatten::sah_cost(&nodes, opts),
             build_time,
         };
         Bvh {
             nodes,
-            nodes4: wide.nodes,
-            root4: wide.root,
-            levels4: wide.levels,
+            nodes8: wide.nodes,
+            root8: wide.root,
+            levels8: wide.levels,
             prim_order,
+            slots: wide.slots,
             stats,
         }
     }

@@ -1,15 +1,16 @@
-//! Tests of the 4-wide tree: its structure against the binary tree, and
+//! Tests of the 8-wide tree: its structure against the binary tree, and
 //! closest-hit / any-hit queries through [`Accel`] against brute force over
 //! all primitives, on mixed scenes (triangles, spheres, disks), including
-//! rays that start on surfaces, axis-parallel rays and short `t_max`; and of
-//! the [`Tri4`] packets [`Accel`] tests leaves with.
+//! rays that start on surfaces, axis-parallel rays and short `t_max`, with
+//! every lane set; and of the [`Tri8`] packets [`Accel`] tests leaves with.
 
-use super::{Bvh, ChildRef, INTERIOR, Node4};
+use super::{Bvh, ChildRef, EMPTY_SLOT, INTERIOR, LEAF_LANES, Node8, WIDTH};
 use crate::Accel;
-use crate::geometry::triangle::Tri4;
+use crate::geometry::triangle::{RayLanes, Tri8};
 use crate::geometry::{
     Disk, MeshData, Prim, PrimHit, ShapeSet, Sphere, TriangleMesh, intersect_triangle,
 };
+use crate::math::lanes::{LaneSet, Lanes, RunLanes};
 use crate::math::{Bounds3, Point2, Point3, Ray, Transform, Vec3};
 use lowdisc::hash::mix64;
 
@@ -64,6 +65,7 @@ fn scene(seed: u64, tris: usize) -> ShapeSet {
     set
 }
 
+/// The smallest (distance, primitive index) over all primitives hit.
 fn brute_force(set: &ShapeSet, ray: &Ray, t_max: f32) -> Option<(Prim, f32)> {
     let mut best: Option<(Prim, f32)> = None;
     for p in set.prims() {
@@ -84,9 +86,9 @@ fn check(set: &ShapeSet, accel: &Accel, rays: &[(Ray, f32)]) -> usize {
         match (want, got) {
             (None, None) => {}
             (Some((wp, wt)), Some(g)) => {
-                assert_eq!(wt, g.surface.t, "ray {i}: {r:?}");
+                // At exact ties, the primitive listed first wins.
+                assert_eq!((wt, wp), (g.surface.t, g.prim), "ray {i}: {r:?}");
                 let h = set.intersect(g.prim, r, f32::INFINITY).unwrap();
-                assert_eq!(h.t, wt, "ray {i}: a tie with {wp:?} only");
                 // The surface built from the packed vertices is the usual one.
                 assert_eq!(g.surface, set.surface_hit(g.prim, r, &h), "ray {i}");
                 hits += 1;
@@ -101,7 +103,6 @@ fn check(set: &ShapeSet, accel: &Accel, rays: &[(Ray, f32)]) -> usize {
 fn queries_equal_brute_force_on_mixed_scenes() {
     for (seed, n) in [(1u64, 2000usize), (2, 300), (3, 5), (4, 0)] {
         let set = scene(seed, n);
-        let accel = Accel::build(set.clone());
         let mut rng = Rng(seed + 100);
         let mut rays = Vec::new();
         for k in 0..2000 {
@@ -126,8 +127,22 @@ fn queries_equal_brute_force_on_mixed_scenes() {
                 rays.push((Ray::new(s.p, rng.dir()), f32::INFINITY));
             }
         }
+        let accel = Accel::build(set.clone());
         let hits = check(&set, &accel, &rays);
         assert!(n == 0 || hits > rays.len() / 5, "seed {seed}: {hits} hits");
+        // The portable lanes give the same hits, bit for bit.
+        let portable = accel.clone().with_lanes(LaneSet::Portable);
+        for (r, t_max) in &rays {
+            let bits = |h: Option<crate::accel::Hit>| format!("{h:?}");
+            assert_eq!(
+                bits(portable.intersect(r, *t_max)),
+                bits(accel.intersect(r, *t_max))
+            );
+            assert_eq!(
+                portable.intersect_p(r, *t_max),
+                accel.intersect_p(r, *t_max)
+            );
+        }
     }
 }
 
@@ -137,22 +152,30 @@ fn walk(
     bvh: &Bvh,
     boxes: &[Bounds3],
     r: ChildRef,
-    b: Option<(&Node4, usize)>,
+    b: Option<(&Node8, usize)>,
     out: &mut Vec<(u32, u32)>,
 ) {
     let inside = |q: &Bounds3| {
         b.is_none_or(|(n, s)| (0..3).all(|a| n.lo(a, s) <= q.min[a] && n.hi(a, s) >= q.max[a]))
     };
     if r.count != INTERIOR {
-        for k in r.child..r.child + r.count {
-            assert!(inside(&boxes[bvh.prim_order()[k as usize] as usize]));
+        assert_eq!(r.child as usize % LEAF_LANES, 0, "a leaf starts a packet");
+        let slots = &bvh.slots()[r.child as usize..];
+        for &id in &slots[..r.count as usize] {
+            assert!(inside(&boxes[id as usize]));
         }
+        let end = (r.count as usize).next_multiple_of(LEAF_LANES);
+        assert!(
+            slots[r.count as usize..end]
+                .iter()
+                .all(|&s| s == EMPTY_SLOT)
+        );
         out.push((r.child, r.count));
         return;
     }
-    let n = &bvh.nodes4()[r.child as usize];
-    assert!(n.used() >= 2, "a 4-wide node has at least two children");
-    for s in 0..4 {
+    let n = &bvh.nodes8()[r.child as usize];
+    assert!(n.used() >= 2, "an 8-wide node has at least two children");
+    for s in 0..WIDTH {
         if n.count[s] == 0 {
             assert!((0..3).all(|a| n.lo(a, s) == f32::INFINITY));
             continue;
@@ -175,31 +198,60 @@ fn wide_tree_covers_every_binary_leaf_once() {
         let boxes: Vec<Bounds3> = set.prims().iter().map(|&p| set.bounds(p)).collect();
         let bvh = Bvh::build(&boxes);
         let mut leaves = Vec::new();
-        walk(&bvh, &boxes, bvh.root4(), None, &mut leaves);
-        let mut want: Vec<(u32, u32)> = bvh
-            .nodes()
-            .iter()
-            .filter(|n| n.is_leaf())
-            .map(|n| (n.offset, n.count as u32))
+        walk(&bvh, &boxes, bvh.root8(), None, &mut leaves);
+        // The same leaves as the binary tree, with the same primitives.
+        let mut got: Vec<Vec<u32>> = (leaves.iter())
+            .map(|&(first, count)| bvh.slots()[first as usize..][..count as usize].to_vec())
             .collect();
-        leaves.sort_unstable();
+        let mut want: Vec<Vec<u32>> = (bvh.nodes().iter())
+            .filter(|n| n.is_leaf())
+            .map(|n| bvh.prim_order()[n.offset as usize..][..n.count as usize].to_vec())
+            .collect();
+        got.sort_unstable();
         want.sort_unstable();
-        assert_eq!(leaves, want, "seed {seed}");
-        assert_eq!(bvh.stats().nodes4, bvh.nodes4().len());
-        assert!(bvh.levels4() <= bvh.stats().max_depth.max(1));
-        // Each 4-wide node absorbs at least one of the (nodes - 1) / 2
+        assert_eq!(got, want, "seed {seed}");
+        assert_eq!(bvh.stats().nodes8, bvh.nodes8().len());
+        assert!(bvh.levels8() <= bvh.stats().max_depth.max(1));
+        // Each 8-wide node absorbs at least one of the (nodes - 1) / 2
         // binary interior nodes.
-        assert!(bvh.nodes4().len() <= bvh.nodes().len() / 2 + 1);
+        assert!(bvh.nodes8().len() <= bvh.nodes().len() / 2 + 1);
     }
     let empty = Bvh::build(&[]);
-    assert!(empty.nodes4().is_empty() && empty.root4() == ChildRef::default());
+    assert!(empty.nodes8().is_empty() && empty.root8() == ChildRef::default());
     let r = Ray::new(Point3::ZERO, Vec3::X);
-    assert!(empty.closest_hit(&r, 1.0, |_, _, _| Some(0.5)).is_none());
-    assert!(!empty.any_hit(&r, 1.0, |_, _, _| true));
+    for l in [LaneSet::Portable, LaneSet::detect()] {
+        assert!(l.run(EmptyQueries(&empty, r)));
+    }
 }
 
-/// Every lane of a packet gives exactly `intersect_triangle`'s answer,
-/// including degenerate triangles, edge-on and axis-parallel rays.
+/// Queries on an empty tree find nothing (and never call the leaf test).
+struct EmptyQueries<'a>(&'a Bvh, Ray);
+
+impl RunLanes for EmptyQueries<'_> {
+    type Output = bool;
+    fn run<L: Lanes>(self, l: L) -> bool {
+        let closest = self.0.closest_hit(l, &self.1, 1.0, |_, _| Some(0.5));
+        closest.is_none() && !self.0.any_hit(l, &self.1, 1.0, |_, _| true)
+    }
+}
+
+/// A packet test with some lane set.
+struct PacketTest<'a>(&'a Tri8, Ray, f32);
+
+impl RunLanes for PacketTest<'_> {
+    type Output = (crate::geometry::triangle::Hits8, bool);
+    fn run<L: Lanes>(self, l: L) -> Self::Output {
+        let rl = RayLanes::new(l, &self.1);
+        let closed = self.0.intersect::<L, true>(l, &rl, self.2);
+        let open = self.0.intersect::<L, false>(l, &rl, self.2);
+        assert_eq!(open.mask & !closed.mask, 0, "open hits are closed hits");
+        (open, self.0.any(l, &rl, self.2))
+    }
+}
+
+/// Every lane of a packet gives exactly `intersect_triangle`'s answer with
+/// every lane set, including degenerate triangles, edge-on and
+/// axis-parallel rays.
 #[test]
 fn packet_lanes_equal_the_single_triangle_test() {
     let mut s = 7u64;
@@ -209,7 +261,7 @@ fn packet_lanes_equal_the_single_triangle_test() {
     };
     let mut hits = 0;
     for k in 0..20_000 {
-        let mut tris = [[Point3::ZERO; 3]; 4];
+        let mut tris = [[Point3::ZERO; 3]; LEAF_LANES];
         for (l, t) in tris.iter_mut().enumerate() {
             *t = [0, 1, 2].map(|_| Point3::new(f(), f(), f()));
             match (k + l) % 6 {
@@ -218,30 +270,33 @@ fn packet_lanes_equal_the_single_triangle_test() {
                 _ => {}
             }
         }
-        let mut packet = Tri4::default();
+        let mut packet = Tri8::default();
         for (l, t) in tris.iter().enumerate() {
             packet.set(l, *t);
         }
         let o = Point3::new(f() * 2.0, f() * 2.0, f() * 2.0);
         // Mostly aimed near a triangle's centroid.
-        let [a, b, c] = tris[k % 4];
+        let [a, b, c] = tris[k % LEAF_LANES];
         let aim = (a + b + c) * (1.0 / 3.0) + Vec3::new(f(), f(), f()) * 0.3;
         let d = match k % 5 {
             0 => Vec3::new(0.0, -0.0, 1.0),
             _ => (aim - o).normalize(),
         };
         let (ray, t_max) = (Ray::new(o, d), if k % 3 == 0 { 1.0 } else { f32::INFINITY });
-        let h = packet.intersect(&ray, t_max);
-        for (l, t) in tris.iter().enumerate() {
-            let want = intersect_triangle(&ray, t_max, *t);
-            let got = (h.mask >> l & 1 == 1).then(|| PrimHit {
-                t: h.t[l],
-                u: h.u[l],
-                v: h.v[l],
-            });
-            assert_eq!(got, want, "case {k} lane {l}");
-            hits += want.is_some() as usize;
+        for set in [LaneSet::Portable, LaneSet::detect()] {
+            let (h, any) = set.run(PacketTest(&packet, ray, t_max));
+            assert_eq!(any, h.mask != 0);
+            for (l, t) in tris.iter().enumerate() {
+                let want = intersect_triangle(&ray, t_max, *t);
+                let got = (h.mask >> l & 1 == 1).then(|| PrimHit {
+                    t: h.t[l],
+                    u: h.u[l],
+                    v: h.v[l],
+                });
+                assert_eq!(got, want, "case {k} lane {l} ({})", set.name());
+                hits += want.is_some() as usize;
+            }
         }
     }
-    assert!(hits > 5000, "{hits}");
+    assert!(hits > 10000, "{hits}");
 }

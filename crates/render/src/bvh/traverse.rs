@@ -1,99 +1,70 @@
-//! Closest-hit and any-hit traversal of the 4-wide tree.
+//! Closest-hit and any-hit traversal of the 8-wide tree.
 //!
-//! Each [`Node4`] visit tests its four child boxes at once (one `wide::f32x4`
-//! register per slab bound), then continues with the nearest hit child and
+//! Each [`Node8`] visit tests its eight child boxes at once (one register of
+//! [`Lanes`] per slab bound), then continues with the nearest hit child and
 //! pushes the others far to near with their entry distances, so that
 //! closest-hit queries skip stacked subtrees that start beyond the closest
-//! hit found since.
+//! hit found since. Any-hit queries take the children in slot order.
 
-use super::wide::{ChildRef, INTERIOR, Node4};
+use super::wide::{ChildRef, INTERIOR, Node8, WIDTH};
 use super::{Bvh, MAX_DEPTH};
+use crate::math::lanes::Lanes;
 use crate::math::{Ray, gamma};
 use arrayvec::ArrayVec;
-use wide::{CmpLe, f32x4};
 
-/// Stack capacity: a visit pushes at most three subtrees, so a tree of at
-/// most `MAX_DEPTH` levels never stacks more.
-const STACK: usize = 3 * MAX_DEPTH;
+/// Stack capacity: a visit pushes at most `WIDTH - 1` subtrees, so a tree
+/// of at most `MAX_DEPTH` levels never stacks more.
+const STACK: usize = (WIDTH - 1) * MAX_DEPTH;
 
 /// Widening of slab and query distances against rounding (pbrt's `1 + 2γ(3)`).
 const WIDEN: f32 = 1.0 + 2.0 * gamma(3);
 
-/// Per-ray constants of the slab test, splatted across the four slots.
-struct RayInv {
-    o: [f32x4; 3],
-    inv: [f32x4; 3],
+/// Per-ray constants of the slab test, splatted across the lanes.
+struct RayInv<L: Lanes> {
+    o: [L::F; 3],
+    inv: [L::F; 3],
+    widen: L::F,
     /// Per axis, the side of a box the ray enters by (1 for the upper
     /// corner when the direction is negative).
     near: [usize; 3],
 }
 
-/// `if a > b { a } else { b }` per lane: a NaN in `a` keeps `b`.
-#[inline(always)]
-fn max_gt(a: f32x4, b: f32x4) -> f32x4 {
-    // MAXPS returns its second operand unless the first is greater.
-    #[cfg(target_feature = "sse")]
-    {
-        a.fast_max(b)
-    }
-    #[cfg(not(target_feature = "sse"))]
-    {
-        use wide::CmpGt;
-        a.cmp_gt(b).blend(a, b)
-    }
-}
-
-/// `if a < b { a } else { b }` per lane: a NaN in `a` keeps `b`.
-#[inline(always)]
-fn min_lt(a: f32x4, b: f32x4) -> f32x4 {
-    // MINPS returns its second operand unless the first is smaller.
-    #[cfg(target_feature = "sse")]
-    {
-        a.fast_min(b)
-    }
-    #[cfg(not(target_feature = "sse"))]
-    {
-        use wide::CmpLt;
-        a.cmp_lt(b).blend(a, b)
-    }
-}
-
-impl RayInv {
+impl<L: Lanes> RayInv<L> {
     #[inline(always)]
-    fn new(ray: &Ray) -> Self {
+    fn new(l: L, ray: &Ray) -> Self {
         let inv = [1.0 / ray.d.x, 1.0 / ray.d.y, 1.0 / ray.d.z];
         // Sign of the inverse, so that -0.0 directions count as negative.
         let near = inv.map(|i| usize::from(i.is_sign_negative()));
+        // (No closures: see `Tri8::intersect`.)
         RayInv {
-            o: [ray.o.x, ray.o.y, ray.o.z].map(f32x4::splat),
-            inv: inv.map(f32x4::splat),
+            o: [l.splat(ray.o.x), l.splat(ray.o.y), l.splat(ray.o.z)],
+            inv: [l.splat(inv[0]), l.splat(inv[1]), l.splat(inv[2])],
+            widen: l.splat(WIDEN),
             near,
         }
     }
 
-    /// Slab test of the four child boxes of `n` over `[0, t_max]`: returns
-    /// each box's entry distance and a bit mask of the boxes hit. `far` is
+    /// Slab test of the child boxes of `n` over `[0, t_max]`: returns each
+    /// box's entry distance and a bit mask of the boxes hit. `far` is
     /// widened by `1 + 2γ(3)` (pbrt) so rounding never culls a box the ray
     /// touches; a NaN slab bound (`0 * inf` for a ray in a slab plane) is
-    /// ignored, i.e. the ray counts as inside that slab. The four slots are
-    /// tested in one SIMD register; every lane does the scalar test's
-    /// operations in the scalar test's order.
+    /// ignored, i.e. the ray counts as inside that slab. Every lane does the
+    /// scalar test's operations in the scalar test's order.
     #[inline(always)]
-    fn hits4(&self, n: &Node4, t_max: f32) -> ([f32; 4], u32) {
-        let mut t0 = f32x4::ZERO;
-        let mut t1 = f32x4::splat(t_max);
-        let widen = f32x4::splat(WIDEN);
+    fn hits(&self, l: L, n: &Node8, t_max: f32) -> ([f32; WIDTH], u32) {
+        let mut t0 = l.splat(0.0);
+        let mut t1 = l.splat(t_max);
         for a in 0..3 {
             // `& 1` lets the compiler drop the bounds checks of both indices.
             let side = self.near[a] & 1;
-            let (lo, hi) = (n.bounds[side][a], n.bounds[side ^ 1][a]);
-            let near = (f32x4::from(lo) - self.o[a]) * self.inv[a];
-            let far = (f32x4::from(hi) - self.o[a]) * self.inv[a] * widen;
-            t0 = max_gt(near, t0);
-            t1 = min_lt(far, t1);
+            let (lo, hi) = (&n.bounds[side][a], &n.bounds[side ^ 1][a]);
+            let near = l.mul(l.sub(l.load(lo), self.o[a]), self.inv[a]);
+            let far = l.mul(l.mul(l.sub(l.load(hi), self.o[a]), self.inv[a]), self.widen);
+            t0 = l.max_gt(near, t0);
+            t1 = l.min_lt(far, t1);
         }
-        let mask = t0.cmp_le(t1).move_mask() as u32;
-        (t0.to_array(), mask)
+        let mask = l.bits(l.le(t0, t1));
+        (l.store(t0), mask)
     }
 }
 
@@ -118,7 +89,7 @@ impl Stack {
 }
 
 #[inline(always)]
-fn slot(n: &Node4, s: usize) -> ChildRef {
+fn slot(n: &Node8, s: usize) -> ChildRef {
     ChildRef {
         child: n.child[s],
         count: n.count[s],
@@ -126,37 +97,39 @@ fn slot(n: &Node4, s: usize) -> ChildRef {
 }
 
 impl Bvh {
-    /// Finds the closest hit along `ray` in `(0, t_max)`.
+    /// Finds the closest hit along `ray` in `(0, t_max)`, testing boxes
+    /// with lanes `l`.
     ///
-    /// `leaf(first, count, t_max)` tests the `count` primitives at leaf-order
-    /// positions `first..first + count` (see [`Bvh::prim_order`]) and returns
-    /// the distance of the closest one hit closer than the given `t_max`, if
-    /// any; the caller records whatever else it needs. Leaves are visited
-    /// roughly near to far. Returns the closest distance found.
-    #[inline]
-    pub fn closest_hit(
+    /// `leaf(first, count)` tests the `count` primitives in slots
+    /// `first..first + count` (see [`Bvh::slots`]) and returns the distance
+    /// of the closest hit so far if it found a new one; the caller keeps
+    /// that hit and whatever else it needs. Leaves are visited roughly
+    /// near to far, and not at all when their box starts beyond the
+    /// closest hit. Returns the closest distance found.
+    #[inline(always)]
+    pub fn closest_hit<L: Lanes>(
         &self,
+        l: L,
         ray: &Ray,
         t_max: f32,
-        mut leaf: impl FnMut(u32, u32, f32) -> Option<f32>,
+        mut leaf: impl FnMut(u32, u32) -> Option<f32>,
     ) -> Option<f32> {
-        let r = RayInv::new(ray);
-        let mut t_max = t_max;
-        // Boxes are tested against a widened `t_max` too: a primitive's
+        let r = RayInv::new(l, ray);
+        // Boxes are tested against a widened `t_max`: a primitive's
         // computed distance may fall a few ulps short of its box's computed
         // entry (coplanar, axis-aligned geometry), and it must not be culled
         // once a hit that is only slightly farther has shrunk `t_max`.
         let mut t_box = t_max * WIDEN;
         let mut found = None;
         let mut stack = Stack::new();
-        let mut cur = self.root4;
+        let mut cur = self.root8;
         loop {
             if cur.count == INTERIOR {
-                let node = &self.nodes4[cur.child as usize];
-                let (tn, mut mask) = r.hits4(node, t_box);
+                let node = &self.nodes8[cur.child as usize];
+                let (tn, mut mask) = r.hits(l, node, t_box);
                 if mask != 0 {
-                    // Hit slots in order of entry distance, nearest last.
-                    let mut order = [0usize; 4];
+                    // Hit children in order of entry distance, nearest last.
+                    let mut order = [0usize; WIDTH];
                     let mut k = 0;
                     while mask != 0 {
                         let s = mask.trailing_zeros() as usize;
@@ -176,12 +149,9 @@ impl Bvh {
                     continue;
                 }
             } else if cur.count > 0 {
-                if let Some(t) = leaf(cur.child, cur.count, t_max) {
-                    if t < t_max {
-                        t_max = t;
-                        t_box = t * WIDEN;
-                        found = Some(t);
-                    }
+                if let Some(t) = leaf(cur.child, cur.count) {
+                    t_box = t * WIDEN;
+                    found = Some(t);
                 }
             }
             // Next stacked subtree whose box starts within the closest hit.
@@ -197,26 +167,28 @@ impl Bvh {
         }
     }
 
-    /// True if any primitive is hit in `(0, t_max)` (shadow rays).
+    /// True if any primitive is hit in `(0, t_max)` (shadow rays), testing
+    /// boxes with lanes `l`.
     ///
-    /// `leaf(first, count, t_max)` tests the primitives at leaf-order
-    /// positions `first..first + count`; traversal stops at the first leaf
-    /// for which it returns `true`.
-    #[inline]
-    pub fn any_hit(
+    /// `leaf(first, count)` tests the primitives in slots
+    /// `first..first + count`; traversal stops at the first leaf for which
+    /// it returns `true`.
+    #[inline(always)]
+    pub fn any_hit<L: Lanes>(
         &self,
+        l: L,
         ray: &Ray,
         t_max: f32,
-        mut leaf: impl FnMut(u32, u32, f32) -> bool,
+        mut leaf: impl FnMut(u32, u32) -> bool,
     ) -> bool {
-        let r = RayInv::new(ray);
+        let r = RayInv::new(l, ray);
         let t_box = t_max * WIDEN;
         let mut stack = Stack::new();
-        let mut cur = self.root4;
+        let mut cur = self.root8;
         loop {
             if cur.count == INTERIOR {
-                let node = &self.nodes4[cur.child as usize];
-                let (_, mut mask) = r.hits4(node, t_box);
+                let node = &self.nodes8[cur.child as usize];
+                let (_, mut mask) = r.hits(l, node, t_box);
                 if mask != 0 {
                     let first = mask.trailing_zeros() as usize;
                     mask &= mask - 1;
@@ -228,7 +200,7 @@ impl Bvh {
                     cur = slot(node, first);
                     continue;
                 }
-            } else if cur.count > 0 && leaf(cur.child, cur.count, t_max) {
+            } else if cur.count > 0 && leaf(cur.child, cur.count) {
                 return true;
             }
             match stack.pop() {
@@ -241,14 +213,31 @@ impl Bvh {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::math::lanes::{LaneSet, Lanes, RunLanes};
 
-    /// The slab test relies on a NaN bound leaving `t0`/`t1` alone.
+    struct MinMax([f32; 8], [f32; 8]);
+    impl RunLanes for MinMax {
+        type Output = ([f32; 8], [f32; 8]);
+        fn run<L: Lanes>(self, l: L) -> Self::Output {
+            let (a, b) = (l.load(&self.0), l.load(&self.1));
+            (l.store(l.max_gt(a, b)), l.store(l.min_lt(a, b)))
+        }
+    }
+
+    /// The slab test relies on a NaN bound leaving `t0`/`t1` alone, with
+    /// every lane set.
     #[test]
     fn lane_min_max_keep_the_second_operand_for_nan() {
-        let a = f32x4::from([f32::NAN, 2.0, -1.0, f32::INFINITY]);
-        let b = f32x4::from([1.0, 1.0, 0.0, 5.0]);
-        assert_eq!(max_gt(a, b).to_array(), [1.0, 2.0, 0.0, f32::INFINITY]);
-        assert_eq!(min_lt(a, b).to_array(), [1.0, 1.0, -1.0, 5.0]);
+        let nan = f32::NAN;
+        let a = [nan, 2.0, -1.0, f32::INFINITY, 1.0, nan, -0.0, 0.0];
+        let b = [1.0, 1.0, 0.0, 5.0, nan, nan, 0.0, -0.0];
+        for set in [LaneSet::Portable, LaneSet::detect()] {
+            let (max, min) = set.run(MinMax(a, b));
+            let want_max = [1.0, 2.0, 0.0, f32::INFINITY, nan, nan, 0.0, -0.0];
+            let want_min = [1.0, 1.0, -1.0, 5.0, nan, nan, 0.0, -0.0];
+            let bits = |v: [f32; 8]| v.map(f32::to_bits);
+            assert_eq!(bits(max), bits(want_max), "{}", set.name());
+            assert_eq!(bits(min), bits(want_min), "{}", set.name());
+        }
     }
 }

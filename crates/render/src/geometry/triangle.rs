@@ -1,10 +1,10 @@
 //! Triangle meshes: storage (world space), ray-triangle intersection
-//! (Möller-Trumbore, one triangle or a [`Tri4`] packet of four at once),
+//! (Möller-Trumbore, one triangle or a [`Tri8`] packet of eight at once),
 //! surface-hit construction and uniform area sampling.
 
 mod packet;
 
-pub use packet::{Hits4, Tri4};
+pub use packet::{Hits8, PACKET_LANES, RayLanes, Tri8};
 
 use super::{PrimHit, ShapeSample, SurfaceHit};
 use crate::error::Error;

@@ -3,6 +3,7 @@
 
 pub mod bounds;
 pub mod frame;
+pub mod lanes;
 pub mod ray;
 pub mod sampling;
 pub mod spherical;

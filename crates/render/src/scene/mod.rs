@@ -249,6 +249,13 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// The same scene with its ray queries run with `lanes` (tests compare
+    /// lane sets; the default is the widest the CPU has).
+    pub fn with_lanes(mut self, lanes: crate::math::lanes::LaneSet) -> Scene {
+        self.accel = self.accel.with_lanes(lanes);
+        self
+    }
+
     /// Closest hit along `ray` (any `t > 0`).
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<SceneHit> {
