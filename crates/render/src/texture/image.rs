@@ -7,7 +7,9 @@
 //! image texture flips `t` before looking up (see [`super::ImageTexture`]).
 
 use super::TextureError;
-use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, read_image_with, srgb_decode};
+use lowdisc_image::{
+    ImageFormat, ReadOptions, RgbImage, read_image_with, srgb_decode, srgb8_decode,
+};
 use std::path::Path;
 
 /// How the 8-bit (or 16-bit) codes of a PNG or TGA file become linear
@@ -59,10 +61,23 @@ impl ColorEncoding {
     /// Decodes a normalised code `v` in `[0,1]`.
     pub fn decode(self, v: f32) -> f32 {
         match self {
-            ColorEncoding::Srgb => srgb_decode(v),
+            ColorEncoding::Srgb => srgb_decode_code(v),
             ColorEncoding::Linear => v,
             ColorEncoding::Gamma(g) => v.max(0.0).powf(g),
         }
+    }
+}
+
+/// [`srgb_decode`] of `v`, from the 8-bit table when `v` is exactly an
+/// 8-bit code `k / 255` (as 8-bit images are read): the table holds
+/// `srgb_decode(k as f32 / 255.0)`, so the value is the same, without a
+/// `powf` per texel channel.
+fn srgb_decode_code(v: f32) -> f32 {
+    let k = (v * 255.0).round();
+    if (0.0..=255.0).contains(&k) && (k as u8) as f32 / 255.0 == v {
+        srgb8_decode(k as u8)
+    } else {
+        srgb_decode(v)
     }
 }
 
@@ -163,5 +178,20 @@ impl TexImage {
                 + (1.0 - dx) * dy * v01[c]
                 + dx * dy * v11[c]
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn srgb_decoding_by_table_is_the_curve_bit_for_bit() {
+        let codes = (0..=255u8).map(|k| f32::from(k) / 255.0);
+        let others = [0.5, 1e-3, 0.04045, -0.25, 1.5, 2.0 / 255.0 + 1e-7, f32::NAN];
+        for v in codes.chain(others) {
+            let got = ColorEncoding::Srgb.decode(v);
+            assert_eq!(got.to_bits(), srgb_decode(v).to_bits(), "{v}");
+        }
     }
 }
