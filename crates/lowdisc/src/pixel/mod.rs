@@ -60,9 +60,10 @@ pub use zsobol::ZSobolSampler;
 pub use zsobol_joint::{GroupLayout, ZSobolJointSampler};
 
 /// The digit-word form of a pixel sampler: a sampler that produces 32-bit
-/// digit words (bit 31 = first binary digit) writes only these five methods
-/// and gets [`PixelSampler`] from them, each word turned into `[0, 1)` by
-/// [`crate::to_f32`].
+/// digit words (bit 31 = first binary digit) writes only the five required
+/// methods and gets [`PixelSampler`] from them, each word turned into
+/// `[0, 1)` by [`crate::to_f32`] (the provided `*_value(s)` methods, which a
+/// sampler with a cheaper way to the same floats overrides).
 pub trait WordSampler {
     /// Samples per pixel the sampler was configured for.
     fn samples_per_pixel(&self) -> u32;
@@ -75,6 +76,23 @@ pub trait WordSampler {
     fn get_2d_words(&mut self) -> [u32; 2];
     /// The in-pixel offset as digit words.
     fn get_pixel_2d_words(&mut self) -> [u32; 2];
+    /// The next 1-D value: [`crate::to_f32`] of [`WordSampler::get_1d_word`]
+    /// (a sampler may compute it another way, never to another value).
+    #[inline]
+    fn get_1d_value(&mut self) -> f32 {
+        crate::to_f32(self.get_1d_word())
+    }
+    /// The next 2-D value: [`crate::to_f32`] of [`WordSampler::get_2d_words`].
+    #[inline]
+    fn get_2d_values(&mut self) -> [f32; 2] {
+        self.get_2d_words().map(crate::to_f32)
+    }
+    /// The in-pixel offset: [`crate::to_f32`] of
+    /// [`WordSampler::get_pixel_2d_words`].
+    #[inline]
+    fn get_pixel_2d_values(&mut self) -> [f32; 2] {
+        self.get_pixel_2d_words().map(crate::to_f32)
+    }
 }
 
 impl<T: WordSampler> PixelSampler for T {
@@ -88,19 +106,19 @@ impl<T: WordSampler> PixelSampler for T {
         WordSampler::start_pixel_sample(self, pixel, sample_index, dimension);
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_1d(&mut self) -> f32 {
-        crate::to_f32(self.get_1d_word())
+        self.get_1d_value()
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_2d(&mut self) -> [f32; 2] {
-        self.get_2d_words().map(crate::to_f32)
+        self.get_2d_values()
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.get_pixel_2d_words().map(crate::to_f32)
+        self.get_pixel_2d_values()
     }
 }
 

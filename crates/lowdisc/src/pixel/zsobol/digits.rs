@@ -1,0 +1,153 @@
+//! The base-4 digit permutations of the cached path (`cache.rs`): one digit
+//! at a time ([`permuted_digit`]), and the pixel part of a dimension key's
+//! entry ([`refresh`]), computed as [`super::ZSobolSampler::sample_index`]
+//! defines it, with less work:
+//!
+//! * **Pixel digits**: digit `i` of the pixel's Morton code is permuted by
+//!   a hash of the digits above it, so when the pixel changes only the
+//!   digits at or below the highest changed one are permuted again (a
+//!   renderer walks neighbouring pixels, whose codes differ in one or two
+//!   low digits); the Sobol words follow by XOR, one table entry per digit.
+//!   The digit whose value changed keeps its permutation (chosen by the
+//!   digits above it), so a step to the next pixel in a row hashes about
+//!   one digit.
+//! * **Tabled sample digits**: a level of `4^j` permutations hashes inputs
+//!   `input ^ v` with `v < 4^j`, so the first step of
+//!   [`mix64`](crate::hash::mix64) is done once per level
+//!   ([`mix64_from_product`]).
+
+use super::BASE4_PERMUTATIONS;
+use super::cache::{Entry, Layout, TOP_LEN, top_digits};
+use crate::hash::{MIX64_MULTIPLIERS, bounded, hash_words, mix64, mix64_from_product};
+use crate::pixel::SEED_PAD;
+use crate::scramble::{dimension_seed, fast_owen_multiplier};
+
+/// [`BASE4_PERMUTATIONS`] packed two bits per image: permutation `p` maps
+/// digit `d` to `(PACKED_PERMUTATIONS[p] >> 2d) & 3`.
+const PACKED_PERMUTATIONS: [u8; 24] = {
+    let mut out = [0u8; 24];
+    let mut p = 0;
+    while p < 24 {
+        let q = BASE4_PERMUTATIONS[p];
+        out[p] = q[0] | (q[1] << 2) | (q[2] << 4) | (q[3] << 6);
+        p += 1;
+    }
+    out
+};
+
+/// [`BASE4_PERMUTATIONS`] as four bytes, image of digit `d` in byte `d`
+/// (little-endian): a digit's permuted images appended to a prefix `q`
+/// are `SPREAD_PERMUTATIONS[p] | q * 0x0404_0404`.
+const SPREAD_PERMUTATIONS: [u32; 24] = {
+    let mut out = [0u32; 24];
+    let mut p = 0;
+    while p < 24 {
+        out[p] = u32::from_le_bytes(BASE4_PERMUTATIONS[p]);
+        p += 1;
+    }
+    out
+};
+
+/// The index (into [`BASE4_PERMUTATIONS`]) of the permutation chosen for a
+/// digit with level hash `level` and higher digits `higher`.
+#[inline(always)]
+fn permutation_index(level: u64, higher: u64) -> usize {
+    bounded(mix64(level ^ higher), 24) as usize
+}
+
+/// The permuted base-4 digit of `morton` at `shift`, in place.
+#[inline(always)]
+pub(super) fn permuted_digit(level: u64, morton: u64, shift: u32) -> u64 {
+    let higher = morton.checked_shr(shift + 2).unwrap_or(0);
+    let packed = PACKED_PERMUTATIONS[permutation_index(level, higher)];
+    u64::from((packed >> (2 * ((morton >> shift) & 3))) & 3) << shift
+}
+
+/// Recomputes the pixel part of `entry` (the dimension key `key`, whose
+/// digits have the level hashes `levels`) for the pixel with Morton code
+/// `code`. `digit_words[i][d]` are the bit-reversed Sobol words of pixel
+/// digit `i` with value `d` (see `Cache::digit_words`).
+pub(super) fn refresh(
+    entry: &mut Entry,
+    levels: &[u64],
+    layout: &Layout,
+    digit_words: &[[u64; 4]],
+    key: u64,
+    code: u64,
+) {
+    let m = layout.log2_spp;
+    let first_pixel_digit = m.div_ceil(2) as usize;
+    permute_pixel_digits(entry, &levels[first_pixel_digit..], m, digit_words, code);
+    // The highest sample digits, level by level: the `j`-th from the top
+    // is digit `first_pixel_digit - 1 - j`; its permutation is chosen by
+    // the pixel code and the `j` digits above it (value `v`). Each pass
+    // extends the permuted prefixes of `j` digits (`entry.top[v]`) by one
+    // digit, in place from the end (entry `4v + d` is written after `v` is
+    // read).
+    entry.top[0] = 0;
+    for j in 0..top_digits(m) as usize {
+        let level = levels[first_pixel_digit - 1 - j];
+        // Every input is `input ^ v` (`v < 4^j`), so `mix64`'s first step,
+        // `x ^ (x >> 30)`, is `first ^ v`.
+        let input = level ^ (code << (2 * j));
+        let first = input ^ (input >> 30);
+        for v in (0..1usize << (2 * j)).rev() {
+            let v = v & (TOP_LEN / 4 - 1);
+            let product = (first ^ v as u64).wrapping_mul(MIX64_MULTIPLIERS[0]);
+            let p = bounded(mix64_from_product(product), 24) as usize;
+            let prefix = u32::from(entry.top[v]) * 0x0404_0404;
+            let extended = SPREAD_PERMUTATIONS[p] | prefix;
+            entry.top[4 * v..4 * v + 4].copy_from_slice(&extended.to_le_bytes());
+        }
+    }
+    let high = entry.upper >> 32;
+    if !entry.seeded || entry.high != high {
+        let h = hash_words(&[layout.seed, SEED_PAD, key, high]);
+        entry.keys = [0, 1].map(|d| layout.strategy.scramble_key(dimension_seed(h, d)));
+        entry.multipliers = entry.keys.map(fast_owen_multiplier);
+        entry.high = high;
+        entry.seeded = true;
+    }
+    entry.code = code;
+    entry.valid = true;
+}
+
+/// Brings `entry.upper` and `entry.upper_words` (and the kept pixel digit
+/// permutations) from the entry's pixel to the pixel with Morton code
+/// `code`; `levels` are the level hashes of the pixel digits. Pixel digit
+/// `i` sits at index bit `m + 2i`; its permutation depends only on the
+/// digits above it, so the digits above the highest changed one are kept,
+/// that digit keeps its permutation, and only the digits below it are
+/// hashed again.
+fn permute_pixel_digits(
+    entry: &mut Entry,
+    levels: &[u64],
+    m: u32,
+    digit_words: &[[u64; 4]],
+    code: u64,
+) {
+    let (changed, kept_permutation) = if entry.valid {
+        let bits = 64 - (entry.code ^ code).leading_zeros();
+        (bits.div_ceil(2) as usize, bits != 0)
+    } else {
+        (levels.len(), false)
+    };
+    let (mut upper, mut words) = (entry.upper, entry.upper_words);
+    for i in (0..changed.min(levels.len())).rev() {
+        let i2 = 2 * i as u32;
+        let packed = if kept_permutation && i + 1 == changed {
+            entry.pixel_permutations[i]
+        } else {
+            let higher = code.checked_shr(i2 + 2).unwrap_or(0);
+            PACKED_PERMUTATIONS[permutation_index(levels[i], higher)]
+        };
+        entry.pixel_permutations[i] = packed;
+        let permuted = u64::from(packed >> (2 * ((code >> i2) & 3))) & 3;
+        let shift = m + i2;
+        let flip = ((upper >> shift) & 3) ^ permuted;
+        upper ^= flip << shift;
+        words ^= digit_words[i][flip as usize];
+    }
+    entry.upper = upper;
+    entry.upper_words = words;
+}
