@@ -27,6 +27,42 @@ pub trait PixelSampler {
     fn get_2d(&mut self) -> [f32; 2];
     /// The position inside the current pixel, in `[0, 1)^2`.
     fn get_pixel_2d(&mut self) -> [f32; 2];
+    /// The next values, one per entry of `dims` in order, exactly as the
+    /// same sequence of [`PixelSampler::get_1d`] (lane 1 is 0) and
+    /// [`PixelSampler::get_2d`] calls gives them; a sampler may draw them
+    /// together (the default sampler checks its caches once).
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+        // A plain loop: the array helpers' closures do not always inline.
+        let mut values = [[0.0; 2]; N];
+        for (value, d) in values.iter_mut().zip(dims) {
+            *value = match d {
+                Dims::One => [self.get_1d(), 0.0],
+                Dims::Two => self.get_2d(),
+            };
+        }
+        values
+    }
+}
+
+/// The dimensions of one value of [`PixelSampler::get_values`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dims {
+    /// A 1-D value ([`PixelSampler::get_1d`]).
+    One,
+    /// A 2-D value ([`PixelSampler::get_2d`]).
+    Two,
+}
+
+impl Dims {
+    /// The dimensions the value consumes (1 or 2).
+    #[inline(always)]
+    pub fn count(self) -> u32 {
+        match self {
+            Dims::One => 1,
+            Dims::Two => 2,
+        }
+    }
 }
 
 mod burley;
@@ -93,6 +129,18 @@ pub trait WordSampler {
     fn get_pixel_2d_values(&mut self) -> [f32; 2] {
         self.get_pixel_2d_words().map(crate::to_f32)
     }
+    /// [`PixelSampler::get_values`]: the `*_value(s)` calls in order.
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+        let mut values = [[0.0; 2]; N];
+        for (value, d) in values.iter_mut().zip(dims) {
+            *value = match d {
+                Dims::One => [self.get_1d_value(), 0.0],
+                Dims::Two => self.get_2d_values(),
+            };
+        }
+        values
+    }
 }
 
 impl<T: WordSampler> PixelSampler for T {
@@ -119,6 +167,11 @@ impl<T: WordSampler> PixelSampler for T {
     #[inline(always)]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.get_pixel_2d_values()
+    }
+
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+        WordSampler::get_values(self, dims)
     }
 }
 

@@ -48,7 +48,7 @@ mod cache;
 mod digits;
 
 use self::cache::{Cache, Layout};
-use super::{SEED_PAD, WordSampler};
+use super::{Dims, SEED_PAD, WordSampler};
 use crate::hash::hash_words;
 use crate::sobol::sample;
 use crate::{Error, RandomizeStrategy, reversed_to_f32, to_f32};
@@ -304,6 +304,39 @@ impl WordSampler for ZSobolSampler {
     #[inline(always)]
     fn get_pixel_2d_values(&mut self) -> [f32; 2] {
         self.values(PIXEL_KEY)
+    }
+
+    /// The values from the cache's fast path in one go when every key has
+    /// it (one counter update, range check and sample state read), else
+    /// one call per value.
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+        let first = self.dimension;
+        let mut offsets = [0; N];
+        let mut count = 0u32;
+        for (offset, d) in offsets.iter_mut().zip(dims) {
+            *offset = count as usize;
+            count += d.count();
+        }
+        if let Some(hashes) = self.cache.fast_many(slot(u64::from(first)), offsets, dims) {
+            self.dimension = first.wrapping_add(count);
+            let mut values = [[0.0; 2]; N];
+            for ((value, hash), d) in values.iter_mut().zip(hashes).zip(dims) {
+                value[0] = reversed_to_f32(hash[0]);
+                if d == Dims::Two {
+                    value[1] = reversed_to_f32(hash[1]);
+                }
+            }
+            return values;
+        }
+        let mut values = [[0.0; 2]; N];
+        for (value, d) in values.iter_mut().zip(dims) {
+            *value = match d {
+                Dims::One => [self.get_1d_value(), 0.0],
+                Dims::Two => self.get_2d_values(),
+            };
+        }
+        values
     }
 }
 

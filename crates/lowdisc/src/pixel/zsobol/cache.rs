@@ -41,6 +41,7 @@ use super::digits::{permuted_digit, refresh};
 use super::{LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
 use crate::hash::{hash_words, mix64};
+use crate::pixel::Dims;
 use crate::pixel::SEED_PAD;
 use crate::scramble::fast_owen_hash;
 use crate::sobol::sample;
@@ -207,6 +208,40 @@ impl Cache {
             let word = (words >> (32 * d)) as u32;
             fast_owen_hash(word, entry.keys[d], entry.multipliers[d])
         }))
+    }
+
+    /// [`Cache::fast`] of the slots `first + offsets[k]` (increasing
+    /// offsets), of `dims[k]` Sobol dimensions each (lane 1 is 0 for one),
+    /// if the fast path has them all.
+    #[inline(always)]
+    pub(super) fn fast_many<const N: usize>(
+        &self,
+        first: usize,
+        offsets: [usize; N],
+        dims: [Dims; N],
+    ) -> Option<[[u32; 2]; N]> {
+        let last = first.checked_add(*offsets.last()?)?;
+        let entries = self.entries.get(first..=last)?;
+        // Plain loops: the array helpers' closures do not always inline.
+        let mut tagged = true;
+        for &o in &offsets {
+            tagged &= entries[o].tag == self.tag;
+        }
+        if !tagged {
+            return None;
+        }
+        let top_index = usize::from(self.top_index);
+        let mut hashes = [[0; 2]; N];
+        for ((hash, &o), n) in hashes.iter_mut().zip(&offsets).zip(dims) {
+            let entry = &entries[o];
+            let lower = entry.top[top_index];
+            let words = entry.upper_words ^ self.lower_words[usize::from(lower)];
+            for (d, h) in hash.iter_mut().enumerate().take(n.count() as usize) {
+                let word = (words >> (32 * d)) as u32;
+                *h = fast_owen_hash(word, entry.keys[d], entry.multipliers[d]);
+            }
+        }
+        Some(hashes)
     }
 
     /// Readies the slot of dimension key `key` for [`Cache::fast`] at the

@@ -118,3 +118,31 @@ fn the_index_map_is_a_bijection_preserving_pixel_blocks() {
         assert!(seen.iter().all(|&v| v));
     }
 }
+
+#[test]
+fn get_values_equals_the_calls_in_order() {
+    use crate::pixel::{Dims, PixelSampler};
+    let dims = [Dims::One, Dims::Two, Dims::One, Dims::Two, Dims::One];
+    // The fast path (spp 256, 16), a general one (spp 5), uncached keys.
+    for (spp, res) in [(256u32, [32u32, 32u32]), (16, [64, 48]), (5, [9, 9])] {
+        let mut together = ZSobolSampler::new(spp, res, RandomizeStrategy::FastOwen, 3).unwrap();
+        let mut one_by_one = together.clone();
+        for visit in 0..60u32 {
+            let pixel = [visit / 3 % res[0], visit / 11 % res[1]];
+            let start = [0, 2, 9, 1020][visit as usize % 4];
+            for s in 0..spp.min(9) {
+                PixelSampler::start_pixel_sample(&mut together, pixel, s, start);
+                PixelSampler::start_pixel_sample(&mut one_by_one, pixel, s, start);
+                for _ in 0..3 {
+                    let got = PixelSampler::get_values(&mut together, dims);
+                    let want = dims.map(|d| match d {
+                        Dims::One => [one_by_one.get_1d(), 0.0],
+                        Dims::Two => one_by_one.get_2d(),
+                    });
+                    assert_eq!(got, want, "{spp} {pixel:?} {s} {start}");
+                    assert_eq!(together.dimension, one_by_one.dimension);
+                }
+            }
+        }
+    }
+}
