@@ -247,7 +247,7 @@ impl Cache {
     /// Readies the slot of dimension key `key` for [`Cache::fast`] at the
     /// started sample (refreshing its pixel part); false if the layout has
     /// no fast path or `key` is not cached.
-    #[inline(never)]
+    #[inline(always)]
     pub(super) fn refresh_fast_path(&mut self, key: u64) -> bool {
         let Some(slot) = cached_slot(key) else {
             return false;

@@ -82,8 +82,8 @@ pub(super) fn refresh(
     // is digit `first_pixel_digit - 1 - j`; its permutation is chosen by
     // the pixel code and the `j` digits above it (value `v`). Each pass
     // extends the permuted prefixes of `j` digits (`entry.top[v]`) by one
-    // digit, in place from the end (entry `4v + d` is written after `v` is
-    // read).
+    // digit, in place from the end, four prefixes at a time (entries
+    // `16g..16g + 16` are written after prefixes `4g..4g + 4` are read).
     entry.top[0] = 0;
     for j in 0..top_digits(m) as usize {
         let level = levels[first_pixel_digit - 1 - j];
@@ -91,13 +91,23 @@ pub(super) fn refresh(
         // `x ^ (x >> 30)`, is `first ^ v`.
         let input = level ^ (code << (2 * j));
         let first = input ^ (input >> 30);
-        for v in (0..1usize << (2 * j)).rev() {
-            let v = v & (TOP_LEN / 4 - 1);
+        let permutation = |v: usize| {
             let product = (first ^ v as u64).wrapping_mul(MIX64_MULTIPLIERS[0]);
-            let p = bounded(mix64_from_product(product), 24) as usize;
-            let prefix = u32::from(entry.top[v]) * 0x0404_0404;
-            let extended = SPREAD_PERMUTATIONS[p] | prefix;
-            entry.top[4 * v..4 * v + 4].copy_from_slice(&extended.to_le_bytes());
+            SPREAD_PERMUTATIONS[bounded(mix64_from_product(product), 24) as usize]
+        };
+        if j == 0 {
+            entry.top[..4].copy_from_slice(&permutation(0).to_le_bytes());
+            continue;
+        }
+        for g in (0..1usize << (2 * j - 2)).rev() {
+            let g = g & (TOP_LEN / 16 - 1);
+            let prefixes: [u8; 4] = core::array::from_fn(|r| entry.top[4 * g + r]);
+            let mut block = [0u8; 16];
+            for (r, &prefix) in prefixes.iter().enumerate() {
+                let extended = permutation(4 * g + r) | (u32::from(prefix) * 0x0404_0404);
+                block[4 * r..4 * r + 4].copy_from_slice(&extended.to_le_bytes());
+            }
+            entry.top[16 * g..16 * g + 16].copy_from_slice(&block);
         }
     }
     let high = entry.upper >> 32;
