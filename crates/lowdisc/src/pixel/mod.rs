@@ -32,7 +32,10 @@ pub trait PixelSampler {
     /// [`PixelSampler::get_2d`] calls gives them; a sampler may draw them
     /// together (the default sampler checks its caches once).
     #[inline(always)]
-    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
         // A plain loop: the array helpers' closures do not always inline.
         let mut values = [[0.0; 2]; N];
         for (value, d) in values.iter_mut().zip(dims) {
@@ -131,7 +134,10 @@ pub trait WordSampler {
     }
     /// [`PixelSampler::get_values`]: the `*_value(s)` calls in order.
     #[inline(always)]
-    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
         let mut values = [[0.0; 2]; N];
         for (value, d) in values.iter_mut().zip(dims) {
             *value = match d {
@@ -170,7 +176,10 @@ impl<T: WordSampler> PixelSampler for T {
     }
 
     #[inline(always)]
-    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
         WordSampler::get_values(self, dims)
     }
 }

@@ -103,7 +103,10 @@ impl PixelSampler for Sampler {
         dispatch!(self, s => s.get_pixel_2d())
     }
 
-    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
         dispatch!(self, s => s.get_values(dims))
     }
 }

@@ -310,7 +310,10 @@ impl WordSampler for ZSobolSampler {
     /// it (one counter update, range check and sample state read), else
     /// one call per value.
     #[inline(always)]
-    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N] {
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
         let first = self.dimension;
         let mut offsets = [0; N];
         let mut count = 0u32;

@@ -37,7 +37,7 @@
 use alloc::boxed::Box;
 use alloc::vec::Vec;
 
-use super::digits::{permuted_digit, refresh};
+use super::digits::{PixelSteps, first_step, permuted_digit, refresh};
 use super::{LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
 use crate::hash::{hash_words, mix64};
@@ -102,9 +102,11 @@ pub(super) struct Entry {
     pub code: u64,
     /// The permuted pixel digits, in place (index bits `>= m`).
     pub upper: u64,
-    /// The permutation of every pixel digit `i` (packed as
-    /// `digits::PACKED_PERMUTATIONS`), for `code`.
+    /// The permutation of every pixel digit `i` (its index into
+    /// [`super::BASE4_PERMUTATIONS`]), for `code`.
     pub pixel_permutations: [u8; 32],
+    /// Every permuted pixel digit (`upper`, digit by digit).
+    pub pixel_digits: [u8; 32],
     /// Whether `keys` is computed (for `high`).
     pub seeded: bool,
     /// Index bits above 31 the keys are for.
@@ -131,8 +133,11 @@ pub(super) struct Cache {
     /// The value of the current sample's tabled sample digits.
     top_index: u8,
     entries: Vec<Entry>,
-    /// `levels[slot * base4_digits + i]`: the level hash of digit `i`.
+    /// `levels[slot * base4_digits + i]`: the first step
+    /// (`digits::first_step`) of the level hash of digit `i`.
     levels: Vec<u64>,
+    /// The first steps of the last refreshed pixel's hash inputs.
+    steps: PixelSteps,
     /// Sobol dimensions 0-1 of every `m`-bit index for `m` up to
     /// [`LOWER_TABLE_BITS`] (dimension 0 in the low half), bit-reversed:
     /// the words are kept reversed because the fast Owen scramble starts by
@@ -176,6 +181,7 @@ impl Cache {
             top_index: 0,
             entries: Vec::new(),
             levels: Vec::new(),
+            steps: PixelSteps::new(0, layout.pixel_digits()),
             lower_words,
             digit_words,
         }
@@ -321,14 +327,25 @@ impl Cache {
 
     /// Recomputes the pixel part of slot `slot` (adding the slots up to it
     /// first) for the pixel with Morton code `code`.
+    #[inline(always)]
     fn refresh(&mut self, slot: usize, key: u64, code: u64) {
         if slot >= self.entries.len() {
             self.grow(slot);
         }
+        if self.steps.code != code {
+            self.steps = PixelSteps::new(code, self.layout.pixel_digits());
+        }
         let digits = self.layout.base4_digits as usize;
         let levels = &self.levels[slot * digits..(slot + 1) * digits];
         let entry = &mut self.entries[slot];
-        refresh(entry, levels, &self.layout, &self.digit_words, key, code);
+        refresh(
+            entry,
+            levels,
+            &self.layout,
+            &self.digit_words,
+            key,
+            &self.steps,
+        );
         entry.tag = if self.short { code } else { NO_TAG };
     }
 
@@ -339,8 +356,9 @@ impl Cache {
         for s in self.entries.len()..=slot {
             let key = if s == 0 { PIXEL_KEY } else { s as u64 - 1 };
             let dim_seed = hash_words(&[layout.seed, SEED_PAD, key]);
-            self.levels
-                .extend((0..u64::from(layout.base4_digits)).map(|i| level(dim_seed, i)));
+            self.levels.extend(
+                (0..u64::from(layout.base4_digits)).map(|i| first_step(level(dim_seed, i))),
+            );
             self.entries.push(Entry {
                 tag: NO_TAG,
                 upper_words: 0,
@@ -351,6 +369,7 @@ impl Cache {
                 code: 0,
                 upper: 0,
                 pixel_permutations: [0; 32],
+                pixel_digits: [0; 32],
                 seeded: false,
                 high: 0,
                 low_key: mix64(dim_seed ^ LOW_BIT_SALT),

@@ -18,7 +18,7 @@
 
 use super::BASE4_PERMUTATIONS;
 use super::cache::{Entry, Layout, TOP_LEN, top_digits};
-use crate::hash::{MIX64_MULTIPLIERS, bounded, hash_words, mix64, mix64_from_product};
+use crate::hash::{MIX64_MULTIPLIERS, bounded, hash_words, mix64_from_product};
 use crate::pixel::SEED_PAD;
 use crate::scramble::{dimension_seed, fast_owen_multiplier};
 
@@ -48,36 +48,83 @@ const SPREAD_PERMUTATIONS: [u32; 24] = {
     out
 };
 
-/// The index (into [`BASE4_PERMUTATIONS`]) of the permutation chosen for a
-/// digit with level hash `level` and higher digits `higher`.
+/// The first step of [`mix64`](crate::hash::mix64), `x ^ (x >> 30)`,
+/// which is linear over XOR: the cache keeps it of every level hash, and of
+/// the pixel's higher digits once per pixel.
 #[inline(always)]
-fn permutation_index(level: u64, higher: u64) -> usize {
-    bounded(mix64(level ^ higher), 24) as usize
+pub(super) fn first_step(x: u64) -> u64 {
+    x ^ (x >> 30)
 }
 
-/// The permuted base-4 digit of `morton` at `shift`, in place.
+/// The index (into [`BASE4_PERMUTATIONS`]) of the permutation chosen for a
+/// digit with level hash `level` and higher digits `higher`, given
+/// `first_step(level) ^ first_step(higher)`: it is
+/// `bounded(mix64(level ^ higher), 24)`.
 #[inline(always)]
-pub(super) fn permuted_digit(level: u64, morton: u64, shift: u32) -> u64 {
+fn permutation_index(first: u64) -> usize {
+    let product = first.wrapping_mul(MIX64_MULTIPLIERS[0]);
+    bounded(mix64_from_product(product), 24) as usize
+}
+
+/// The permuted base-4 digit of `morton` at `shift`, in place, for the
+/// digit whose level hash has the first step `level_step`.
+#[inline(always)]
+pub(super) fn permuted_digit(level_step: u64, morton: u64, shift: u32) -> u64 {
     let higher = morton.checked_shr(shift + 2).unwrap_or(0);
-    let packed = PACKED_PERMUTATIONS[permutation_index(level, higher)];
+    let packed = PACKED_PERMUTATIONS[permutation_index(level_step ^ first_step(higher))];
     u64::from((packed >> (2 * ((morton >> shift) & 3))) & 3) << shift
 }
 
+/// The first steps of one pixel's hash inputs, shared by every dimension
+/// key: of the digits above each pixel digit, and of the code shifted for
+/// each level of tabled sample digits.
+#[derive(Debug, Clone)]
+pub(super) struct PixelSteps {
+    /// The pixel's Morton code.
+    pub code: u64,
+    /// `first_step(code >> (2i + 2))` for pixel digit `i`.
+    higher: [u64; 32],
+    /// Pixel digit `i` of the code.
+    digits: [u8; 32],
+    /// `first_step(code << 2j)` for level `j` of the tabled digits.
+    top: [u64; 4],
+}
+
+impl PixelSteps {
+    /// The steps of the pixel with Morton code `code` (`pixel_digits` of
+    /// them, at most 32).
+    pub fn new(code: u64, pixel_digits: u32) -> Self {
+        let (mut higher, mut digits) = ([0; 32], [0; 32]);
+        for (i, (h, d)) in (0..pixel_digits).zip(higher.iter_mut().zip(&mut digits)) {
+            *h = first_step(code.checked_shr(2 * i + 2).unwrap_or(0));
+            *d = (code.checked_shr(2 * i).unwrap_or(0) & 3) as u8;
+        }
+        PixelSteps {
+            code,
+            higher,
+            digits,
+            top: core::array::from_fn(|j| first_step(code.checked_shl(2 * j as u32).unwrap_or(0))),
+        }
+    }
+}
+
 /// Recomputes the pixel part of `entry` (the dimension key `key`, whose
-/// digits have the level hashes `levels`) for the pixel with Morton code
-/// `code`. `digit_words[i][d]` are the bit-reversed Sobol words of pixel
-/// digit `i` with value `d` (see `Cache::digit_words`).
+/// digits' level hashes have the first steps `levels`) for the pixel with
+/// the steps `steps`. `digit_words[i][d]` are the bit-reversed Sobol words
+/// of pixel digit `i` with value `d` (see `Cache::digit_words`).
+#[inline(always)]
 pub(super) fn refresh(
     entry: &mut Entry,
     levels: &[u64],
     layout: &Layout,
     digit_words: &[[u64; 4]],
     key: u64,
-    code: u64,
+    steps: &PixelSteps,
 ) {
     let m = layout.log2_spp;
+    let code = steps.code;
     let first_pixel_digit = m.div_ceil(2) as usize;
-    permute_pixel_digits(entry, &levels[first_pixel_digit..], m, digit_words, code);
+    permute_pixel_digits(entry, &levels[first_pixel_digit..], m, digit_words, steps);
     // The highest sample digits, level by level: the `j`-th from the top
     // is digit `first_pixel_digit - 1 - j`; its permutation is chosen by
     // the pixel code and the `j` digits above it (value `v`). Each pass
@@ -86,15 +133,10 @@ pub(super) fn refresh(
     // `16g..16g + 16` are written after prefixes `4g..4g + 4` are read).
     entry.top[0] = 0;
     for j in 0..top_digits(m) as usize {
-        let level = levels[first_pixel_digit - 1 - j];
-        // Every input is `input ^ v` (`v < 4^j`), so `mix64`'s first step,
-        // `x ^ (x >> 30)`, is `first ^ v`.
-        let input = level ^ (code << (2 * j));
-        let first = input ^ (input >> 30);
-        let permutation = |v: usize| {
-            let product = (first ^ v as u64).wrapping_mul(MIX64_MULTIPLIERS[0]);
-            SPREAD_PERMUTATIONS[bounded(mix64_from_product(product), 24) as usize]
-        };
+        // Every input is `level ^ (code << 2j) ^ v` (`v < 4^j`), whose
+        // first step is `first ^ v`.
+        let first = levels[first_pixel_digit - 1 - j] ^ steps.top[j & 3];
+        let permutation = |v: usize| SPREAD_PERMUTATIONS[permutation_index(first ^ v as u64)];
         if j == 0 {
             entry.top[..4].copy_from_slice(&permutation(0).to_le_bytes());
             continue;
@@ -123,40 +165,41 @@ pub(super) fn refresh(
 }
 
 /// Brings `entry.upper` and `entry.upper_words` (and the kept pixel digit
-/// permutations) from the entry's pixel to the pixel with Morton code
-/// `code`; `levels` are the level hashes of the pixel digits. Pixel digit
+/// permutations) from the entry's pixel to the pixel of `steps`; `levels`
+/// are the first steps of the pixel digits' level hashes. Pixel digit
 /// `i` sits at index bit `m + 2i`; its permutation depends only on the
 /// digits above it, so the digits above the highest changed one are kept,
 /// that digit keeps its permutation, and only the digits below it are
 /// hashed again.
+#[inline(always)]
 fn permute_pixel_digits(
     entry: &mut Entry,
     levels: &[u64],
     m: u32,
     digit_words: &[[u64; 4]],
-    code: u64,
+    steps: &PixelSteps,
 ) {
     let (changed, kept_permutation) = if entry.valid {
-        let bits = 64 - (entry.code ^ code).leading_zeros();
+        let bits = 64 - (entry.code ^ steps.code).leading_zeros();
         (bits.div_ceil(2) as usize, bits != 0)
     } else {
         (levels.len(), false)
     };
     let (mut upper, mut words) = (entry.upper, entry.upper_words);
-    for i in (0..changed.min(levels.len())).rev() {
-        let i2 = 2 * i as u32;
-        let packed = if kept_permutation && i + 1 == changed {
+    let changed = changed.min(levels.len()).min(digit_words.len()).min(32);
+    let (levels, digit_words) = (&levels[..changed], &digit_words[..changed]);
+    for i in (0..changed).rev() {
+        let p = if kept_permutation && i + 1 == changed {
             entry.pixel_permutations[i]
         } else {
-            let higher = code.checked_shr(i2 + 2).unwrap_or(0);
-            PACKED_PERMUTATIONS[permutation_index(levels[i], higher)]
+            permutation_index(levels[i] ^ steps.higher[i]) as u8
         };
-        entry.pixel_permutations[i] = packed;
-        let permuted = u64::from(packed >> (2 * ((code >> i2) & 3))) & 3;
-        let shift = m + i2;
-        let flip = ((upper >> shift) & 3) ^ permuted;
-        upper ^= flip << shift;
-        words ^= digit_words[i][flip as usize];
+        entry.pixel_permutations[i] = p;
+        let permuted = BASE4_PERMUTATIONS[usize::from(p)][usize::from(steps.digits[i] & 3)];
+        let flip = entry.pixel_digits[i] ^ permuted;
+        entry.pixel_digits[i] = permuted;
+        upper ^= u64::from(flip) << (m + 2 * i as u32);
+        words ^= digit_words[i][usize::from(flip & 3)];
     }
     entry.upper = upper;
     entry.upper_words = words;
