@@ -37,7 +37,7 @@
 use alloc::boxed::Box;
 use alloc::vec::Vec;
 
-use super::digits::{PixelSteps, first_step, permuted_digit, refresh};
+use super::digits::{PixelSteps, below_top, first_step, refresh};
 use super::{LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
 use crate::hash::{hash_words, mix64};
@@ -286,7 +286,9 @@ impl Cache {
         let top = (morton >> below) & self.top_mask;
         let mut lower = u64::from(entry.top[top as usize & (TOP_LEN - 1)]) << below;
         if below != 0 {
-            lower |= self.below_top(slot, morton);
+            let digits = self.layout.base4_digits as usize;
+            let levels = &self.levels[slot * digits..(slot + 1) * digits];
+            lower |= below_top(levels, entry.low_key, m, morton);
         }
         let lower_words = if m <= LOWER_TABLE_BITS {
             self.lower_words[lower as usize & (LOWER_LEN - 1)]
@@ -301,28 +303,6 @@ impl Cache {
                 .strategy
                 .apply_key_reversed(reversed, entry.keys[d])
         }))
-    }
-
-    /// The permuted index bits below the top sample digits of slot `slot`:
-    /// the sample digits under them (one bit mix each) and the odd low bit.
-    #[inline(never)]
-    fn below_top(&self, slot: usize, morton: u64) -> u64 {
-        let m = self.layout.log2_spp;
-        let odd = m & 1;
-        let digits = self.layout.base4_digits as usize;
-        let levels = &self.levels[slot * digits..(slot + 1) * digits];
-        let entry = &self.entries[slot];
-        let mut lower = 0;
-        // The digits below the top ones (index `i` at shift `2i - odd`).
-        let rest = m / 2 - top_digits(m) + odd;
-        for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
-            lower |= permuted_digit(level, morton, 2 * i - odd);
-        }
-        if odd == 1 {
-            let flip = mix64(entry.low_key ^ (morton >> 1)) >> 63;
-            lower |= (morton & 1) ^ flip;
-        }
-        lower
     }
 
     /// Recomputes the pixel part of slot `slot` (adding the slots up to it

@@ -1,8 +1,12 @@
-//! The base-4 digit permutations of the cached path (`cache.rs`): one digit
-//! at a time ([`permuted_digit`]), and the pixel part of a dimension key's
-//! entry ([`refresh`]), computed as [`super::ZSobolSampler::sample_index`]
-//! defines it, with less work:
+//! The base-4 digit permutations of the cached path (`cache.rs`): the
+//! sample digits below the tabled ones, one at a time ([`below_top`]), and
+//! the pixel part of a dimension key's entry ([`refresh`]), computed as
+//! [`super::ZSobolSampler::sample_index`] defines it, with less work:
 //!
+//! * **Hashes**: every permutation is chosen by
+//!   `mix64(level ^ higher)`, whose first step `x ^ (x >> 30)` is linear
+//!   over XOR, so the cache keeps that step of each level hash and
+//!   [`PixelSteps`] computes it of a pixel's inputs once for every key.
 //! * **Pixel digits**: digit `i` of the pixel's Morton code is permuted by
 //!   a hash of the digits above it, so when the pixel changes only the
 //!   digits at or below the highest changed one are permuted again (a
@@ -18,7 +22,7 @@
 
 use super::BASE4_PERMUTATIONS;
 use super::cache::{Entry, Layout, TOP_LEN, top_digits};
-use crate::hash::{MIX64_MULTIPLIERS, bounded, hash_words, mix64_from_product};
+use crate::hash::{MIX64_MULTIPLIERS, bounded, hash_words, mix64, mix64_from_product};
 use crate::pixel::SEED_PAD;
 use crate::scramble::{dimension_seed, fast_owen_multiplier};
 
@@ -69,10 +73,31 @@ fn permutation_index(first: u64) -> usize {
 /// The permuted base-4 digit of `morton` at `shift`, in place, for the
 /// digit whose level hash has the first step `level_step`.
 #[inline(always)]
-pub(super) fn permuted_digit(level_step: u64, morton: u64, shift: u32) -> u64 {
+fn permuted_digit(level_step: u64, morton: u64, shift: u32) -> u64 {
     let higher = morton.checked_shr(shift + 2).unwrap_or(0);
     let packed = PACKED_PERMUTATIONS[permutation_index(level_step ^ first_step(higher))];
     u64::from((packed >> (2 * ((morton >> shift) & 3))) & 3) << shift
+}
+
+/// The permuted index bits below the tabled sample digits at Morton index
+/// `morton` (`m` sample bits), for the key whose level hashes have the
+/// first steps `levels` and whose odd low bit's flip has the key
+/// `low_key`: the sample digits under the tabled ones (one bit mix each)
+/// and the odd low bit.
+#[inline(never)]
+pub(super) fn below_top(levels: &[u64], low_key: u64, m: u32, morton: u64) -> u64 {
+    let odd = m & 1;
+    let mut lower = 0;
+    // The digits below the top ones (index `i` at shift `2i - odd`).
+    let rest = m / 2 - top_digits(m) + odd;
+    for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
+        lower |= permuted_digit(level, morton, 2 * i - odd);
+    }
+    if odd == 1 {
+        let flip = mix64(low_key ^ (morton >> 1)) >> 63;
+        lower |= (morton & 1) ^ flip;
+    }
+    lower
 }
 
 /// The first steps of one pixel's hash inputs, shared by every dimension
