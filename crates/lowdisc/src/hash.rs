@@ -10,9 +10,16 @@ pub(crate) const MIX64_MULTIPLIERS: [u64; 2] = [0xbf58_476d_1ce4_e5b9, 0x94d0_49
 
 /// A strong 64-bit bit mixer (bijective).
 #[inline]
-pub fn mix64(mut x: u64) -> u64 {
-    x ^= x >> 30;
-    x = x.wrapping_mul(MIX64_MULTIPLIERS[0]);
+pub fn mix64(x: u64) -> u64 {
+    mix64_from_product((x ^ (x >> 30)).wrapping_mul(MIX64_MULTIPLIERS[0]))
+}
+
+/// The steps of [`mix64`] after its first multiplication:
+/// `mix64(x) == mix64_from_product((x ^ (x >> 30)) * MIX64_MULTIPLIERS[0])`
+/// (wrapping). Lets a caller that hashes a run of inputs differing only in
+/// their low bits step that product by addition.
+#[inline(always)]
+pub(crate) fn mix64_from_product(mut x: u64) -> u64 {
     x ^= x >> 27;
     x = x.wrapping_mul(MIX64_MULTIPLIERS[1]);
     x ^= x >> 31;

@@ -334,13 +334,29 @@ pub fn fast_owen_scramble(word: u32, seed: u32) -> u32 {
 /// [`fast_owen_scramble`] of `reversed.reverse_bits()`.
 #[inline(always)]
 pub(crate) fn fast_owen_scramble_reversed(reversed: u32, seed: u32) -> u32 {
+    fast_owen_hash(reversed, seed, fast_owen_multiplier(seed)).reverse_bits()
+}
+
+/// The multiplier the fast Owen hash derives from its seed (see
+/// [`fast_owen_hash`]); a caller that keeps a seed keeps this too.
+#[inline(always)]
+pub(crate) fn fast_owen_multiplier(seed: u32) -> u32 {
+    (seed >> 16) | 1
+}
+
+/// The hash of [`fast_owen_scramble_reversed`] before its final reversal,
+/// with the seed's `multiplier` ([`fast_owen_multiplier`]) given:
+/// `fast_owen_scramble_reversed(r, seed)` equals
+/// `fast_owen_hash(r, seed, fast_owen_multiplier(seed)).reverse_bits()`.
+#[inline(always)]
+pub(crate) fn fast_owen_hash(reversed: u32, seed: u32, multiplier: u32) -> u32 {
     let mut x = reversed;
     x ^= x.wrapping_mul(0x3d20_adea);
     x = x.wrapping_add(seed);
-    x = x.wrapping_mul((seed >> 16) | 1);
+    x = x.wrapping_mul(multiplier);
     x ^= x.wrapping_mul(0x0552_6c56);
     x ^= x.wrapping_mul(0x53a2_2864);
-    x.reverse_bits()
+    x
 }
 
 /// [`fast_owen_scramble`] on four words with four seeds: lane `k` equals

@@ -27,6 +27,45 @@ pub trait PixelSampler {
     fn get_2d(&mut self) -> [f32; 2];
     /// The position inside the current pixel, in `[0, 1)^2`.
     fn get_pixel_2d(&mut self) -> [f32; 2];
+    /// The next values, one per entry of `dims` in order, exactly as the
+    /// same sequence of [`PixelSampler::get_1d`] (lane 1 is 0) and
+    /// [`PixelSampler::get_2d`] calls gives them; a sampler may draw them
+    /// together (the default sampler checks its caches once).
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
+        // A plain loop: the array helpers' closures do not always inline.
+        let mut values = [[0.0; 2]; N];
+        for (value, d) in values.iter_mut().zip(dims) {
+            *value = match d {
+                Dims::One => [self.get_1d(), 0.0],
+                Dims::Two => self.get_2d(),
+            };
+        }
+        values
+    }
+}
+
+/// The dimensions of one value of [`PixelSampler::get_values`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dims {
+    /// A 1-D value ([`PixelSampler::get_1d`]).
+    One,
+    /// A 2-D value ([`PixelSampler::get_2d`]).
+    Two,
+}
+
+impl Dims {
+    /// The dimensions the value consumes (1 or 2).
+    #[inline(always)]
+    pub fn count(self) -> u32 {
+        match self {
+            Dims::One => 1,
+            Dims::Two => 2,
+        }
+    }
 }
 
 mod burley;
@@ -60,9 +99,10 @@ pub use zsobol::ZSobolSampler;
 pub use zsobol_joint::{GroupLayout, ZSobolJointSampler};
 
 /// The digit-word form of a pixel sampler: a sampler that produces 32-bit
-/// digit words (bit 31 = first binary digit) writes only these five methods
-/// and gets [`PixelSampler`] from them, each word turned into `[0, 1)` by
-/// [`crate::to_f32`].
+/// digit words (bit 31 = first binary digit) writes only the five required
+/// methods and gets [`PixelSampler`] from them, each word turned into
+/// `[0, 1)` by [`crate::to_f32`] (the provided `*_value(s)` methods, which a
+/// sampler with a cheaper way to the same floats overrides).
 pub trait WordSampler {
     /// Samples per pixel the sampler was configured for.
     fn samples_per_pixel(&self) -> u32;
@@ -75,6 +115,38 @@ pub trait WordSampler {
     fn get_2d_words(&mut self) -> [u32; 2];
     /// The in-pixel offset as digit words.
     fn get_pixel_2d_words(&mut self) -> [u32; 2];
+    /// The next 1-D value: [`crate::to_f32`] of [`WordSampler::get_1d_word`]
+    /// (a sampler may compute it another way, never to another value).
+    #[inline]
+    fn get_1d_value(&mut self) -> f32 {
+        crate::to_f32(self.get_1d_word())
+    }
+    /// The next 2-D value: [`crate::to_f32`] of [`WordSampler::get_2d_words`].
+    #[inline]
+    fn get_2d_values(&mut self) -> [f32; 2] {
+        self.get_2d_words().map(crate::to_f32)
+    }
+    /// The in-pixel offset: [`crate::to_f32`] of
+    /// [`WordSampler::get_pixel_2d_words`].
+    #[inline]
+    fn get_pixel_2d_values(&mut self) -> [f32; 2] {
+        self.get_pixel_2d_words().map(crate::to_f32)
+    }
+    /// [`PixelSampler::get_values`]: the `*_value(s)` calls in order.
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
+        let mut values = [[0.0; 2]; N];
+        for (value, d) in values.iter_mut().zip(dims) {
+            *value = match d {
+                Dims::One => [self.get_1d_value(), 0.0],
+                Dims::Two => self.get_2d_values(),
+            };
+        }
+        values
+    }
 }
 
 impl<T: WordSampler> PixelSampler for T {
@@ -88,19 +160,27 @@ impl<T: WordSampler> PixelSampler for T {
         WordSampler::start_pixel_sample(self, pixel, sample_index, dimension);
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_1d(&mut self) -> f32 {
-        crate::to_f32(self.get_1d_word())
+        self.get_1d_value()
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_2d(&mut self) -> [f32; 2] {
-        self.get_2d_words().map(crate::to_f32)
+        self.get_2d_values()
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.get_pixel_2d_words().map(crate::to_f32)
+        self.get_pixel_2d_values()
+    }
+
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
+        WordSampler::get_values(self, dims)
     }
 }
 

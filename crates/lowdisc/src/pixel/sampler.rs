@@ -4,9 +4,9 @@
 //! [`crate::catalog::SamplerConfig`].
 
 use super::{
-    BurleySampler, CascadedSobolSampler, GlobalSobolSampler, HaltonSampler, IndependentSampler,
-    PaddedSobolSampler, PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler,
-    ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
+    BurleySampler, CascadedSobolSampler, Dims, GlobalSobolSampler, HaltonSampler,
+    IndependentSampler, PaddedSobolSampler, PixelSampler, PixelXorSampler, PmjSampler,
+    StratifiedSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
 };
 
 /// Every pixel sampler of the crate.
@@ -101,6 +101,13 @@ impl PixelSampler for Sampler {
 
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         dispatch!(self, s => s.get_pixel_2d())
+    }
+
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
+        dispatch!(self, s => s.get_values(dims))
     }
 }
 

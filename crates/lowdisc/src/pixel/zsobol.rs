@@ -45,12 +45,13 @@
 //! the same bits.
 
 mod cache;
+mod digits;
 
 use self::cache::{Cache, Layout};
-use super::{SEED_PAD, WordSampler};
+use super::{Dims, SEED_PAD, WordSampler};
 use crate::hash::hash_words;
 use crate::sobol::sample;
-use crate::{Error, RandomizeStrategy};
+use crate::{Error, RandomizeStrategy, reversed_to_f32, to_f32};
 
 /// All 24 permutations of `{0, 1, 2, 3}` in lexicographic order.
 const fn base4_permutations() -> [[u8; 4]; 24] {
@@ -109,6 +110,9 @@ pub struct ZSobolSampler {
     strategy: RandomizeStrategy,
     seed: u64,
     morton: u64,
+    /// The last pixel started (`x << 32 | y`, both masked to the square)
+    /// and its Morton code.
+    last_pixel: Option<(u64, u64)>,
     dimension: u32,
     /// Hashes reused between values (never changes a value).
     cache: Cache,
@@ -154,6 +158,7 @@ impl ZSobolSampler {
             strategy,
             seed,
             morton: 0,
+            last_pixel: None,
             dimension: 0,
             cache: Cache::new(layout),
         })
@@ -163,10 +168,42 @@ impl ZSobolSampler {
     /// dimension key `key`: the cached path, else the definition.
     #[inline(always)]
     fn words<const N: usize>(&mut self, key: u64) -> [u32; N] {
-        match self.cache.words(key, self.morton) {
+        match self.cache.fast(slot(key)) {
+            Some(hashes) => hashes.map(u32::reverse_bits),
+            None => match self.slow(key) {
+                Slow::Hashes(hashes) => hashes.map(u32::reverse_bits),
+                Slow::Words(words) => words,
+            },
+        }
+    }
+
+    /// [`ZSobolSampler::words`] as floats in `[0, 1)` (as [`to_f32`]).
+    #[inline(always)]
+    fn values<const N: usize>(&mut self, key: u64) -> [f32; N] {
+        match self.cache.fast(slot(key)) {
+            Some(hashes) => hashes.map(reversed_to_f32),
+            None => match self.slow(key) {
+                Slow::Hashes(hashes) => hashes.map(reversed_to_f32),
+                Slow::Words(words) => words.map(to_f32),
+            },
+        }
+    }
+
+    /// [`ZSobolSampler::words`] off the cache's fast path: the fast path's
+    /// hashes once the key's slot is refreshed for the pixel, if the
+    /// layout has that path, else the words from the cache's general path
+    /// or from the definition.
+    #[inline(never)]
+    fn slow<const N: usize>(&mut self, key: u64) -> Slow<N> {
+        if self.cache.refresh_fast_path(key)
+            && let Some(hashes) = self.cache.fast(slot(key))
+        {
+            return Slow::Hashes(hashes);
+        }
+        Slow::Words(match self.cache.words_general(key, self.morton) {
             Some(words) => words,
             None => self.direct_words(key),
-        }
+        })
     }
 
     /// The scrambled words of Sobol dimensions `0..N` for `key`, computed
@@ -213,8 +250,23 @@ impl WordSampler for ZSobolSampler {
     #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dimension: u32) {
         let mask = ((1u64 << self.log2_res) - 1) as u32;
-        let code = morton2(pixel[0] & mask, pixel[1] & mask);
-        self.morton = (code << self.log2_spp) | u64::from(sample_index % self.spp);
+        let [x, y] = pixel.map(|c| u64::from(c & mask));
+        let masked = (x << 32) | y;
+        let code = match self.last_pixel {
+            Some((last, code)) if last == masked => code,
+            _ => {
+                let code = morton2(x as u32, y as u32);
+                self.last_pixel = Some((masked, code));
+                code
+            }
+        };
+        let sample = if sample_index < self.spp {
+            sample_index
+        } else {
+            sample_index % self.spp
+        };
+        self.morton = (code << self.log2_spp) | u64::from(sample);
+        self.cache.start(self.morton);
         self.dimension = dimension;
     }
 
@@ -235,108 +287,83 @@ impl WordSampler for ZSobolSampler {
     fn get_pixel_2d_words(&mut self) -> [u32; 2] {
         self.words(PIXEL_KEY)
     }
+
+    #[inline(always)]
+    fn get_1d_value(&mut self) -> f32 {
+        let key = super::next_key(&mut self.dimension, 1);
+        let [value] = self.values(key);
+        value
+    }
+
+    #[inline(always)]
+    fn get_2d_values(&mut self) -> [f32; 2] {
+        let key = super::next_key(&mut self.dimension, 2);
+        self.values(key)
+    }
+
+    #[inline(always)]
+    fn get_pixel_2d_values(&mut self) -> [f32; 2] {
+        self.values(PIXEL_KEY)
+    }
+
+    /// The values from the cache's fast path in one go when every key has
+    /// it (one counter update, range check and sample state read), else
+    /// one call per value.
+    #[inline(always)]
+    fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
+    where
+        Self: Sized,
+    {
+        let first = self.dimension;
+        let mut offsets = [0; N];
+        let mut count = 0u32;
+        for (offset, d) in offsets.iter_mut().zip(dims) {
+            *offset = count as usize;
+            count += d.count();
+        }
+        if let Some(hashes) = self.cache.fast_many(slot(u64::from(first)), offsets, dims) {
+            self.dimension = first.wrapping_add(count);
+            let mut values = [[0.0; 2]; N];
+            for ((value, hash), d) in values.iter_mut().zip(hashes).zip(dims) {
+                value[0] = reversed_to_f32(hash[0]);
+                if d == Dims::Two {
+                    value[1] = reversed_to_f32(hash[1]);
+                }
+            }
+            return values;
+        }
+        let mut values = [[0.0; 2]; N];
+        for (value, d) in values.iter_mut().zip(dims) {
+            *value = match d {
+                Dims::One => [self.get_1d_value(), 0.0],
+                Dims::Two => self.get_2d_values(),
+            };
+        }
+        values
+    }
+}
+
+/// What [`ZSobolSampler::slow`] found.
+enum Slow<const N: usize> {
+    /// Hashes of the cache's fast path (the words bit-reversed).
+    Hashes([u32; N]),
+    /// The words.
+    Words([u32; N]),
+}
+
+/// The cache slot of dimension key `key` (`1 + key`; 0 for the pixel key;
+/// slots past the cache's end are not cached).
+#[inline(always)]
+fn slot(key: u64) -> usize {
+    if key == PIXEL_KEY {
+        0
+    } else {
+        usize::try_from(key).map_or(usize::MAX, |k| k.saturating_add(1))
+    }
 }
 
 mod split_index;
 pub(crate) use split_index::KeyIndex;
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::hash::mix64;
-
-    #[test]
-    fn the_table_holds_all_24_distinct_permutations() {
-        for (i, p) in BASE4_PERMUTATIONS.iter().enumerate() {
-            let mut sorted = *p;
-            sorted.sort_unstable();
-            assert_eq!(sorted, [0, 1, 2, 3]);
-            assert!(BASE4_PERMUTATIONS[..i].iter().all(|q| q != p));
-        }
-        assert_eq!(BASE4_PERMUTATIONS[0], [0, 1, 2, 3]);
-        assert_eq!(BASE4_PERMUTATIONS[23], [3, 2, 1, 0]);
-    }
-
-    #[test]
-    fn morton_interleaves_x_low() {
-        assert_eq!(morton2(1, 0), 1);
-        assert_eq!(morton2(0, 1), 2);
-        assert_eq!(morton2(3, 5), 0b10_01_11);
-        assert_eq!(morton2(u32::MAX, u32::MAX), u64::MAX);
-    }
-
-    #[test]
-    fn the_cached_path_equals_the_definition() {
-        // (spp, resolution): even and odd m, spp not a power of two, more
-        // than 32 index bits (high bits in the seed), m above the table.
-        let configs = [
-            (16u32, [640u32, 360u32]),
-            (1, [7, 5]),
-            (2, [3, 3]),
-            (5, [33, 17]),
-            (8, [1 << 15, 3]),
-            (3, [1 << 16, 1 << 16]),
-            (1 << 12, [64, 64]),
-            (2048, [1, 1]),
-        ];
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        for (spp, res) in configs {
-            for r in RandomizeStrategy::ALL {
-                let Ok(mut s) = ZSobolSampler::new(spp, res, r, 11) else {
-                    assert!(r == RandomizeStrategy::None);
-                    continue;
-                };
-                for visit in 0..120u32 {
-                    state = mix64(state.wrapping_add(u64::from(visit)));
-                    // Runs of samples of one pixel, and jumps between pixels.
-                    let pixel = [
-                        (state as u32) % (res[0] + 3),
-                        ((state >> 20) as u32) % res[1],
-                    ];
-                    let start = if visit % 3 == 0 {
-                        1020
-                    } else {
-                        (state >> 50) as u32 % 4
-                    };
-                    for k in 0..(1 + (state >> 40) as u32 % 4) {
-                        s.start_pixel_sample(pixel, (state >> 8) as u32 % spp + k, start);
-                        assert_eq!(s.get_pixel_2d_words(), s.direct_words::<2>(PIXEL_KEY));
-                        for _ in 0..4 {
-                            let key = u64::from(s.dimension);
-                            let want1 = s.direct_words::<1>(key);
-                            assert_eq!([s.get_1d_word()], want1, "{spp} {res:?} {r:?}");
-                            let key = u64::from(s.dimension);
-                            let want2 = s.direct_words::<2>(key);
-                            assert_eq!(s.get_2d_words(), want2, "{spp} {res:?} {r:?}");
-                        }
-                    }
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn the_index_map_is_a_bijection_preserving_pixel_blocks() {
-        for spp in [1u32, 2, 4, 8, 32] {
-            let mut s = ZSobolSampler::new(spp, [8, 8], RandomizeStrategy::None, 3).unwrap();
-            let m = s.log2_spp;
-            let total = 64usize << m;
-            let mut seen = alloc::vec![false; total];
-            for y in 0..8 {
-                for x in 0..8 {
-                    let mut block = None;
-                    for k in 0..spp {
-                        s.start_pixel_sample([x, y], k, 0);
-                        let i = s.sample_index(5);
-                        assert!(!seen[i as usize]);
-                        seen[i as usize] = true;
-                        let b = i >> m;
-                        assert!(block.is_none_or(|c| c == b), "pixel block split");
-                        block = Some(b);
-                    }
-                }
-            }
-            assert!(seen.iter().all(|&v| v));
-        }
-    }
-}
+mod tests;

@@ -7,7 +7,7 @@ use crate::light::LightSampleContext;
 use crate::math::{Frame, Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
 use crate::scene::Scene;
 use crate::spectrum::{Colour, Rgb};
-use lowdisc::pixel::PixelSampler;
+use lowdisc::pixel::{Dims, PixelSampler};
 
 /// The sample values one scattering vertex uses, drawn in the documented order.
 struct VertexSamples {
@@ -21,11 +21,8 @@ struct VertexSamples {
 impl VertexSamples {
     #[inline]
     fn draw<S: PixelSampler>(s: &mut S) -> Self {
-        let light_choice = s.get_1d();
-        let light = s.get_2d();
-        let lobe = s.get_1d();
-        let bsdf = s.get_2d();
-        let rr = s.get_1d();
+        let [[light_choice, _], light, [lobe, _], bsdf, [rr, _]] =
+            s.get_values([Dims::One, Dims::Two, Dims::One, Dims::Two, Dims::One]);
         VertexSamples {
             light_choice,
             light,

@@ -5,37 +5,45 @@
 //! * **Per dimension key** (the same for every pixel): the hash of the seed
 //!   and the key, the level hash of every base-4 digit and the key of the
 //!   odd low bit's flip.
-//! * **Per dimension key and pixel**: the digits at or above the sample bits
-//!   (shift `>= m`) depend only on the pixel's Morton code, so their
-//!   permuted value, its Sobol words (the Sobol point is linear over GF(2)
-//!   in the index bits, so the words of `upper | lower` are the XOR of the
-//!   words of both parts) and the randomizer seeds (which depend on the
-//!   index bits above 31, all among these digits as `m <= 32`) are kept
-//!   until the pixel changes. A renderer visits the samples of a pixel one
-//!   after another, so this is computed once per pixel and key.
-//!   The permutations of the four highest sample digits are chosen by
-//!   hashes of the pixel digits and at most three sample digits, so the
+//! * **Per dimension key and pixel** (the *pixel part*, `digits.rs`): the
+//!   digits at or above the sample bits (shift `>= m`) depend only on the
+//!   pixel's Morton code, so their permuted value, its Sobol words (the
+//!   Sobol point is linear over GF(2) in the index bits, so the words of
+//!   `upper | lower` are the XOR of the words of both parts) and the
+//!   randomizer seeds (which depend on the index bits above 31, all among
+//!   these digits as `m <= 32`) are kept until the pixel changes; only the
+//!   pixel digits at or below the highest one that changed are permuted
+//!   again. The permutations of the four highest sample digits are chosen
+//!   by hashes of the pixel digits and at most three sample digits, so the
 //!   1 + 4 + 16 + 64 of them are applied once, level by level, into a table
 //!   of the permuted value of those digits for each of their (at most 256)
 //!   values; the scramble key of each randomizer seed is kept too.
+//! * **Per sample** ([`Cache::start`]): the pixel's code and the value of
+//!   the tabled sample digits.
 //! * **Per value**: one lookup in that table, the sample digits below those
 //!   four (one bit mix each; none for `m <= 9`), the odd low bit's flip, a
 //!   table lookup of the Sobol words of the low bits and the scramble.
 //!   With no sample digits below the table's (`m` even, at most 8: `spp`
-//!   1, 4, 16, 64 or 256) and the fast Owen scramble, that path makes no
-//!   call, so it inlines into the caller; refreshes, hashed digits and the
-//!   other scrambles are out of line.
+//!   1, 4, 16, 64 or 256) and the fast Owen scramble, that path
+//!   ([`Cache::fast`]) is a tag compare, two lookups and the hash, without
+//!   a call, so it inlines into the caller, and hands back the hash before
+//!   its final bit reversal (a float is then read from the reversed word,
+//!   [`crate::reversed_to_f32`]); refreshes, hashed digits and the other
+//!   scrambles are out of line ([`Cache::words_general`]).
 //!
 //! Keys `0..CACHED_KEYS` and the pixel key are cached; any other key takes
 //! the direct path.
 
+use alloc::boxed::Box;
 use alloc::vec::Vec;
 
-use super::{BASE4_PERMUTATIONS, LOW_BIT_SALT, PIXEL_KEY};
+use super::digits::{PixelSteps, below_top, first_step, refresh};
+use super::{LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
-use crate::hash::{bounded, hash_words, mix64};
+use crate::hash::{hash_words, mix64};
+use crate::pixel::Dims;
 use crate::pixel::SEED_PAD;
-use crate::scramble::{dimension_seed, fast_owen_scramble_reversed};
+use crate::scramble::fast_owen_hash;
 use crate::sobol::sample;
 
 /// Dimension keys below this are cached (slot `1 + key`; slot 0 is the
@@ -43,6 +51,12 @@ use crate::sobol::sample;
 const CACHED_KEYS: u64 = 1024;
 /// Sample bits up to which the Sobol words of the low index bits are tabled.
 const LOWER_TABLE_BITS: u32 = 10;
+/// Entries of [`Cache::lower_words`].
+const LOWER_LEN: usize = 1 << LOWER_TABLE_BITS;
+/// [`Entry::tag`] of an entry the fast path must not use.
+pub(super) const NO_TAG: u64 = u64::MAX;
+/// [`Cache::tag`] when the layout has no fast path (no entry has this tag).
+const NO_FAST_PATH: u64 = u64::MAX - 1;
 
 /// The sampler constants the fast path needs.
 #[derive(Debug, Clone, Copy)]
@@ -57,31 +71,51 @@ pub(super) struct Layout {
     pub base4_digits: u32,
 }
 
-/// What is known about one dimension key.
-#[derive(Debug, Clone)]
-struct Entry {
-    /// Key of the odd low bit's flip.
-    low_key: u64,
-    /// Whether the pixel part below is computed (for `code`).
-    valid: bool,
-    /// Morton code of the pixel the pixel part is for.
-    code: u64,
-    /// Sobol dimensions 0-1 of the low 32 bits of the permuted pixel
-    /// digits, bit-reversed (see `Cache::lower_words`).
-    upper_words: [u32; 2],
-    /// The permuted value of the [`TOP_DIGITS`] (or fewer, see
-    /// [`top_digits`]) highest sample digits, indexed by their value.
-    top: [u8; TOP_LEN],
-    /// Whether `keys` is computed (for `high`).
-    seeded: bool,
-    /// Index bits above 31 the keys are for.
-    high: u64,
-    /// Scramble keys ([`RandomizeStrategy::scramble_key`]) of the
-    /// per-dimension seeds of Sobol dimensions 0 and 1.
-    keys: [u32; 2],
+impl Layout {
+    /// The base-4 digits of the pixel's Morton code (`log2 R`).
+    pub fn pixel_digits(&self) -> u32 {
+        self.base4_digits - self.log2_spp.div_ceil(2)
+    }
 }
 
-/// The caches of one sampler (see the module documentation).
+/// What is known about one dimension key.
+#[derive(Debug, Clone)]
+pub(super) struct Entry {
+    /// The Morton code the pixel part is for while [`Cache::fast`] may use
+    /// the entry, else [`NO_TAG`].
+    pub tag: u64,
+    /// Sobol dimensions 0 (low half) and 1 (high half) of the low 32 bits
+    /// of the permuted pixel digits, bit-reversed (as
+    /// [`Cache::lower_words`]).
+    pub upper_words: u64,
+    /// Scramble keys ([`RandomizeStrategy::scramble_key`]) of the
+    /// per-dimension seeds of Sobol dimensions 0 and 1.
+    pub keys: [u32; 2],
+    /// The fast Owen hash's multipliers of `keys`.
+    pub multipliers: [u32; 2],
+    /// The permuted value of the [`TOP_DIGITS`] (or fewer, see
+    /// [`top_digits`]) highest sample digits, indexed by their value.
+    pub top: [u8; TOP_LEN],
+    /// Whether the pixel part is computed (for `code`).
+    pub valid: bool,
+    /// Morton code of the pixel the pixel part is for.
+    pub code: u64,
+    /// The permuted pixel digits, in place (index bits `>= m`).
+    pub upper: u64,
+    /// The permutation of every pixel digit `i` (its index into
+    /// [`super::BASE4_PERMUTATIONS`]), for `code`.
+    pub pixel_permutations: [u8; 32],
+    /// Every permuted pixel digit (`upper`, digit by digit).
+    pub pixel_digits: [u8; 32],
+    /// Whether `keys` is computed (for `high`).
+    pub seeded: bool,
+    /// Index bits above 31 the keys are for.
+    pub high: u64,
+    /// Key of the odd low bit's flip.
+    pub low_key: u64,
+}
+
+/// Per-key hashes and per-pixel parts; see the module documentation.
 #[derive(Debug, Clone)]
 pub(super) struct Cache {
     layout: Layout,
@@ -89,76 +123,160 @@ pub(super) struct Cache {
     below: u32,
     /// Mask of the top sample digits' value (after shifting by `below`).
     top_mask: u64,
-    /// Whether [`Cache::words`] may take its shortest path: no sample bits
-    /// below the top digits (`m` even, at most 8), the low-bit words
-    /// tabled and the fast Owen scramble.
+    /// Whether [`Cache::fast`] may serve values: no sample bits below the
+    /// top digits (`m` even, at most 8), the fast Owen scramble and fewer
+    /// than 32 pixel digits (so no code equals a tag with a meaning).
     short: bool,
+    /// The current sample's tag: its pixel's Morton code if `short`, else
+    /// [`NO_FAST_PATH`].
+    tag: u64,
+    /// The value of the current sample's tabled sample digits.
+    top_index: u8,
     entries: Vec<Entry>,
-    /// `levels[slot * base4_digits + i]`: the level hash of digit `i`.
+    /// `levels[slot * base4_digits + i]`: the first step
+    /// (`digits::first_step`) of the level hash of digit `i`.
     levels: Vec<u64>,
-    /// Sobol dimensions 0-1 of every `m`-bit index (empty for large `m`),
-    /// bit-reversed: the words are kept reversed because the fast Owen
-    /// scramble starts by reversing them (reversal commutes with XOR).
-    lower_words: Vec<[u32; 2]>,
+    /// The first steps of the last refreshed pixel's hash inputs.
+    steps: PixelSteps,
+    /// Sobol dimensions 0-1 of every `m`-bit index for `m` up to
+    /// [`LOWER_TABLE_BITS`] (dimension 0 in the low half), bit-reversed:
+    /// the words are kept reversed because the fast Owen scramble starts by
+    /// reversing them (reversal commutes with XOR).
+    lower_words: Box<[u64; LOWER_LEN]>,
+    /// `digit_words[i][d]`: the same words of pixel digit `i` of value `d`
+    /// (zero where the digit lies above index bit 31).
+    digit_words: Vec<[u64; 4]>,
 }
 
 impl Cache {
     /// An empty cache for `layout`; tables the low-bit words when `m` is small.
     pub(super) fn new(layout: Layout) -> Self {
-        let lower_words = if layout.log2_spp <= LOWER_TABLE_BITS {
-            (0..1u32 << layout.log2_spp).map(reversed_words).collect()
-        } else {
-            Vec::new()
-        };
-        let t = top_digits(layout.log2_spp);
-        let below = layout.log2_spp - 2 * t;
+        let m = layout.log2_spp;
+        let mut lower_words = Box::new([0; LOWER_LEN]);
+        if m <= LOWER_TABLE_BITS {
+            for (i, w) in lower_words.iter_mut().take(1 << m).enumerate() {
+                *w = packed_reversed_words(i as u32);
+            }
+        }
+        let digit_words = (0..layout.pixel_digits())
+            .map(|i| {
+                let shift = m + 2 * i;
+                core::array::from_fn(|d| match shift {
+                    0..32 => packed_reversed_words((d as u32) << shift),
+                    _ => 0,
+                })
+            })
+            .collect();
+        let t = top_digits(m);
+        let below = m - 2 * t;
         Cache {
             layout,
             below,
             top_mask: (1 << (2 * t)) - 1,
             short: below == 0
-                && !lower_words.is_empty()
-                && layout.strategy == RandomizeStrategy::FastOwen,
+                && m <= LOWER_TABLE_BITS
+                && layout.strategy == RandomizeStrategy::FastOwen
+                && layout.pixel_digits() < 32,
+            tag: NO_FAST_PATH,
+            top_index: 0,
             entries: Vec::new(),
             levels: Vec::new(),
+            steps: PixelSteps::new(0, layout.pixel_digits()),
             lower_words,
+            digit_words,
         }
+    }
+
+    /// Starts the sample at Morton index `morton`.
+    #[inline(always)]
+    pub(super) fn start(&mut self, morton: u64) {
+        self.tag = if self.short {
+            morton >> self.layout.log2_spp
+        } else {
+            NO_FAST_PATH
+        };
+        self.top_index = (morton & self.top_mask) as u8;
+    }
+
+    /// The `N` (1 or 2) hashes of Sobol dimensions `0..N` of slot `slot`
+    /// at the started sample, before their final bit reversal (the word is
+    /// `hash.reverse_bits()`), if the fast path has them: the slot's pixel
+    /// part is for this pixel and the layout is `short`.
+    #[inline(always)]
+    pub(super) fn fast<const N: usize>(&self, slot: usize) -> Option<[u32; N]> {
+        let entry = self.entries.get(slot)?;
+        if entry.tag != self.tag {
+            return None;
+        }
+        let lower = entry.top[usize::from(self.top_index)];
+        let words = entry.upper_words ^ self.lower_words[usize::from(lower)];
+        Some(core::array::from_fn(|d| {
+            let word = (words >> (32 * d)) as u32;
+            fast_owen_hash(word, entry.keys[d], entry.multipliers[d])
+        }))
+    }
+
+    /// [`Cache::fast`] of the slots `first + offsets[k]` (increasing
+    /// offsets), of `dims[k]` Sobol dimensions each (lane 1 is 0 for one),
+    /// if the fast path has them all.
+    #[inline(always)]
+    pub(super) fn fast_many<const N: usize>(
+        &self,
+        first: usize,
+        offsets: [usize; N],
+        dims: [Dims; N],
+    ) -> Option<[[u32; 2]; N]> {
+        let last = first.checked_add(*offsets.last()?)?;
+        let entries = self.entries.get(first..=last)?;
+        // Plain loops: the array helpers' closures do not always inline.
+        let mut tagged = true;
+        for &o in &offsets {
+            tagged &= entries[o].tag == self.tag;
+        }
+        if !tagged {
+            return None;
+        }
+        let top_index = usize::from(self.top_index);
+        let mut hashes = [[0; 2]; N];
+        for ((hash, &o), n) in hashes.iter_mut().zip(&offsets).zip(dims) {
+            let entry = &entries[o];
+            let lower = entry.top[top_index];
+            let words = entry.upper_words ^ self.lower_words[usize::from(lower)];
+            for (d, h) in hash.iter_mut().enumerate().take(n.count() as usize) {
+                let word = (words >> (32 * d)) as u32;
+                *h = fast_owen_hash(word, entry.keys[d], entry.multipliers[d]);
+            }
+        }
+        Some(hashes)
+    }
+
+    /// Readies the slot of dimension key `key` for [`Cache::fast`] at the
+    /// started sample (refreshing its pixel part); false if the layout has
+    /// no fast path or `key` is not cached.
+    #[inline(always)]
+    pub(super) fn refresh_fast_path(&mut self, key: u64) -> bool {
+        let Some(slot) = cached_slot(key) else {
+            return false;
+        };
+        if self.short {
+            self.refresh(slot, key, self.tag);
+        }
+        self.short
     }
 
     /// The `N` (1 or 2) scrambled words of Sobol dimensions `0..N` for
     /// dimension key `key` at Morton index `morton`, or `None` if `key` is
-    /// not cached.
-    #[inline(always)]
-    pub(super) fn words<const N: usize>(&mut self, key: u64, morton: u64) -> Option<[u32; N]> {
-        let slot = if key == PIXEL_KEY {
-            0
-        } else if key < CACHED_KEYS {
-            key as usize + 1
-        } else {
-            return None;
-        };
-        let code = morton >> self.layout.log2_spp;
-        if self.short
-            && let Some(entry) = self.entries.get(slot)
-            && entry.valid
-            && entry.code == code
-        {
-            // A lookup and the scramble, without a call (the common case).
-            let lower = entry.top[(morton & self.top_mask) as usize & (TOP_LEN - 1)];
-            let lower_words = self.lower_words[usize::from(lower)];
-            return Some(core::array::from_fn(|d| {
-                fast_owen_scramble_reversed(entry.upper_words[d] ^ lower_words[d], entry.keys[d])
-            }));
-        }
-        Some(self.words_general(slot, key, morton))
-    }
-
-    /// [`Cache::words`] of a cached `slot` in general: refreshes the slot
-    /// for the pixel if needed, hashes the sample digits below the top
-    /// ones and applies any strategy.
+    /// not cached: refreshes the key's slot for the pixel if needed, hashes
+    /// the sample digits below the top ones and applies any strategy.
     #[inline(never)]
-    fn words_general<const N: usize>(&mut self, slot: usize, key: u64, morton: u64) -> [u32; N] {
-        let code = morton >> self.layout.log2_spp;
+    pub(super) fn words_general<const N: usize>(
+        &mut self,
+        key: u64,
+        morton: u64,
+    ) -> Option<[u32; N]> {
+        let slot = cached_slot(key)?;
+        let m = self.layout.log2_spp;
+        let code = morton >> m;
         match self.entries.get(slot) {
             Some(entry) if entry.valid && entry.code == code => {}
             _ => self.refresh(slot, key, code),
@@ -168,53 +286,47 @@ impl Cache {
         let top = (morton >> below) & self.top_mask;
         let mut lower = u64::from(entry.top[top as usize & (TOP_LEN - 1)]) << below;
         if below != 0 {
-            lower |= self.below_top(slot, morton);
+            let digits = self.layout.base4_digits as usize;
+            let levels = &self.levels[slot * digits..(slot + 1) * digits];
+            lower |= below_top(levels, entry.low_key, m, morton);
         }
-        let lower_words = match self.lower_words.get(lower as usize) {
-            Some(&w) => w,
-            None => reversed_words(lower as u32),
+        let lower_words = if m <= LOWER_TABLE_BITS {
+            self.lower_words[lower as usize & (LOWER_LEN - 1)]
+        } else {
+            packed_reversed_words(lower as u32)
         };
         let entry = &self.entries[slot];
-        core::array::from_fn(|d| {
-            let reversed = entry.upper_words[d] ^ lower_words[d];
+        let words = entry.upper_words ^ lower_words;
+        Some(core::array::from_fn(|d| {
+            let reversed = (words >> (32 * d)) as u32;
             self.layout
                 .strategy
                 .apply_key_reversed(reversed, entry.keys[d])
-        })
-    }
-
-    /// The permuted index bits below the top sample digits of slot `slot`:
-    /// the sample digits under them (one bit mix each) and the odd low bit.
-    #[inline(never)]
-    fn below_top(&self, slot: usize, morton: u64) -> u64 {
-        let m = self.layout.log2_spp;
-        let odd = m & 1;
-        let digits = self.layout.base4_digits as usize;
-        let levels = &self.levels[slot * digits..(slot + 1) * digits];
-        let entry = &self.entries[slot];
-        let mut lower = 0;
-        // The digits below the top ones (index `i` at shift `2i - odd`).
-        let rest = m / 2 - top_digits(m) + odd;
-        for (i, &level) in (odd..rest).zip(&levels[odd as usize..]) {
-            lower |= permuted_digit(level, morton, 2 * i - odd);
-        }
-        if odd == 1 {
-            let flip = mix64(entry.low_key ^ (morton >> 1)) >> 63;
-            lower |= (morton & 1) ^ flip;
-        }
-        lower
+        }))
     }
 
     /// Recomputes the pixel part of slot `slot` (adding the slots up to it
     /// first) for the pixel with Morton code `code`.
-    #[inline(never)]
+    #[inline(always)]
     fn refresh(&mut self, slot: usize, key: u64, code: u64) {
         if slot >= self.entries.len() {
             self.grow(slot);
         }
+        if self.steps.code != code {
+            self.steps = PixelSteps::new(code, self.layout.pixel_digits());
+        }
         let digits = self.layout.base4_digits as usize;
         let levels = &self.levels[slot * digits..(slot + 1) * digits];
-        refresh(&mut self.entries[slot], levels, &self.layout, key, code);
+        let entry = &mut self.entries[slot];
+        refresh(
+            entry,
+            levels,
+            &self.layout,
+            &self.digit_words,
+            key,
+            &self.steps,
+        );
+        entry.tag = if self.short { code } else { NO_TAG };
     }
 
     /// Adds the entries of every slot up to `slot`.
@@ -224,26 +336,42 @@ impl Cache {
         for s in self.entries.len()..=slot {
             let key = if s == 0 { PIXEL_KEY } else { s as u64 - 1 };
             let dim_seed = hash_words(&[layout.seed, SEED_PAD, key]);
-            self.levels
-                .extend((0..u64::from(layout.base4_digits)).map(|i| level(dim_seed, i)));
+            self.levels.extend(
+                (0..u64::from(layout.base4_digits)).map(|i| first_step(level(dim_seed, i))),
+            );
             self.entries.push(Entry {
-                low_key: mix64(dim_seed ^ LOW_BIT_SALT),
+                tag: NO_TAG,
+                upper_words: 0,
+                keys: [0; 2],
+                multipliers: [0; 2],
+                top: [0; TOP_LEN],
                 valid: false,
                 code: 0,
-                upper_words: [0; 2],
-                top: [0; TOP_LEN],
+                upper: 0,
+                pixel_permutations: [0; 32],
+                pixel_digits: [0; 32],
                 seeded: false,
                 high: 0,
-                keys: [0; 2],
+                low_key: mix64(dim_seed ^ LOW_BIT_SALT),
             });
         }
     }
 }
 
-/// Sobol dimensions 0-1 of `index`, bit-reversed.
-#[inline]
-fn reversed_words(index: u32) -> [u32; 2] {
-    [sample(index, 0), sample(index, 1)].map(u32::reverse_bits)
+/// The slot of dimension key `key` if it is cached (slot 0 is the pixel
+/// key's).
+fn cached_slot(key: u64) -> Option<usize> {
+    match key {
+        PIXEL_KEY => Some(0),
+        0..CACHED_KEYS => Some(key as usize + 1),
+        _ => None,
+    }
+}
+
+/// Sobol dimensions 0 (low half) and 1 (high half) of `index`, bit-reversed.
+fn packed_reversed_words(index: u32) -> u64 {
+    let [a, b] = [sample(index, 0), sample(index, 1)].map(u32::reverse_bits);
+    u64::from(a) | (u64::from(b) << 32)
 }
 
 /// The level hash of digit `i` for a dimension seed (as `sample_index`).
@@ -252,105 +380,13 @@ pub(super) fn level(dim_seed: u64, i: u64) -> u64 {
     mix64(dim_seed ^ i.wrapping_mul(0x9e37_79b9_7f4a_7c15))
 }
 
-/// [`BASE4_PERMUTATIONS`] packed two bits per image: permutation `p` maps
-/// digit `d` to `(PACKED_PERMUTATIONS[p] >> 2d) & 3`.
-const PACKED_PERMUTATIONS: [u8; 24] = {
-    let mut out = [0u8; 24];
-    let mut p = 0;
-    while p < 24 {
-        let q = BASE4_PERMUTATIONS[p];
-        out[p] = q[0] | (q[1] << 2) | (q[2] << 4) | (q[3] << 6);
-        p += 1;
-    }
-    out
-};
-
-/// [`BASE4_PERMUTATIONS`] as four bytes, image of digit `d` in byte `d`
-/// (little-endian): a digit's permuted images appended to a prefix `q`
-/// are `SPREAD_PERMUTATIONS[p] | q * 0x0101_0101`.
-const SPREAD_PERMUTATIONS: [u32; 24] = {
-    let mut out = [0u32; 24];
-    let mut p = 0;
-    while p < 24 {
-        let q = BASE4_PERMUTATIONS[p];
-        out[p] = u32::from_le_bytes(q);
-        p += 1;
-    }
-    out
-};
-
-/// The index (into [`BASE4_PERMUTATIONS`]) of the permutation chosen for a
-/// digit with level hash `level` and higher digits `higher`.
-#[inline(always)]
-fn permutation_index(level: u64, higher: u64) -> usize {
-    bounded(mix64(level ^ higher), 24) as usize
-}
-
-/// The packed permutation chosen for a digit with level hash `level` and
-/// higher digits `higher`.
-#[inline(always)]
-fn packed_permutation(level: u64, higher: u64) -> u8 {
-    PACKED_PERMUTATIONS[permutation_index(level, higher)]
-}
-
-/// Applies a packed permutation to the digit of `morton` at `shift`.
-#[inline(always)]
-fn apply_packed(packed: u8, morton: u64, shift: u32) -> u64 {
-    let digit = (morton >> shift) & 3;
-    u64::from((packed >> (2 * digit)) & 3) << shift
-}
-
-/// The permuted base-4 digit `i` (at `shift`) of `morton`.
-#[inline(always)]
-fn permuted_digit(level: u64, morton: u64, shift: u32) -> u64 {
-    let higher = morton.checked_shr(shift + 2).unwrap_or(0);
-    apply_packed(packed_permutation(level, higher), morton, shift)
-}
-
-/// Recomputes the pixel part of `entry` for the pixel with Morton code `code`.
-fn refresh(entry: &mut Entry, levels: &[u64], layout: &Layout, key: u64, code: u64) {
-    let m = layout.log2_spp;
-    let odd = m & 1;
-    // `code << m` fits: the index has at most 64 bits.
-    let morton = code << m;
-    let mut upper = 0u64;
-    for (i, &level) in (m.div_ceil(2)..).zip(&levels[m.div_ceil(2) as usize..]) {
-        upper |= permuted_digit(level, morton, 2 * i - odd);
-    }
-    entry.upper_words = reversed_words(upper as u32);
-    // The highest sample digits, level by level: the `j`-th from the top
-    // is digit `top - 1 - j`; its permutation is chosen by the pixel code
-    // and the `j` digits above it (value `v`). Each pass extends the
-    // permuted prefixes of `j` digits (`entry.top[v]`) by one digit, in
-    // place from the end (entry `4v + d` is written after `v` is read).
-    let top = m.div_ceil(2) as usize;
-    entry.top[0] = 0;
-    for j in 0..top_digits(m) {
-        let level = levels[top - 1 - j as usize];
-        for v in (0..1usize << (2 * j)).rev() {
-            let p = permutation_index(level, (code << (2 * j)) | v as u64);
-            let prefixed = SPREAD_PERMUTATIONS[p] | (u32::from(entry.top[v] << 2) * 0x0101_0101);
-            entry.top[4 * v..4 * v + 4].copy_from_slice(&prefixed.to_le_bytes());
-        }
-    }
-    let high = upper >> 32;
-    if !entry.seeded || entry.high != high {
-        let h = hash_words(&[layout.seed, SEED_PAD, key, high]);
-        entry.keys = [0, 1].map(|d| layout.strategy.scramble_key(dimension_seed(h, d)));
-        entry.high = high;
-        entry.seeded = true;
-    }
-    entry.code = code;
-    entry.valid = true;
-}
-
 /// Sample digits (at most) that [`Entry::top`] permutes by lookup.
 const TOP_DIGITS: u32 = 4;
 /// Entries of [`Entry::top`]: `4^TOP_DIGITS`.
-const TOP_LEN: usize = 1 << (2 * TOP_DIGITS);
+pub(super) const TOP_LEN: usize = 1 << (2 * TOP_DIGITS);
 
 /// Sample digits in [`Entry::top`] for `m` sample bits.
 #[inline(always)]
-fn top_digits(m: u32) -> u32 {
+pub(super) fn top_digits(m: u32) -> u32 {
     (m / 2).min(TOP_DIGITS)
 }
