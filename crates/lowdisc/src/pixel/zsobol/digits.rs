@@ -150,32 +150,15 @@ pub(super) fn refresh(
     let code = steps.code;
     let first_pixel_digit = m.div_ceil(2) as usize;
     permute_pixel_digits(entry, &levels[first_pixel_digit..], m, digit_words, steps);
-    // The highest sample digits, level by level: the `j`-th from the top
-    // is digit `first_pixel_digit - 1 - j`; its permutation is chosen by
-    // the pixel code and the `j` digits above it (value `v`). Each pass
-    // extends the permuted prefixes of `j` digits (`entry.top[v]`) by one
-    // digit, in place from the end, four prefixes at a time (entries
-    // `16g..16g + 16` are written after prefixes `4g..4g + 4` are read).
-    entry.top[0] = 0;
-    for j in 0..top_digits(m) as usize {
-        // Every input is `level ^ (code << 2j) ^ v` (`v < 4^j`), whose
-        // first step is `first ^ v`.
-        let first = levels[first_pixel_digit - 1 - j] ^ steps.top[j & 3];
-        let permutation = |v: usize| SPREAD_PERMUTATIONS[permutation_index(first ^ v as u64)];
-        if j == 0 {
-            entry.top[..4].copy_from_slice(&permutation(0).to_le_bytes());
-            continue;
-        }
-        for g in (0..1usize << (2 * j - 2)).rev() {
-            let g = g & (TOP_LEN / 16 - 1);
-            let prefixes: [u8; 4] = core::array::from_fn(|r| entry.top[4 * g + r]);
-            let mut block = [0u8; 16];
-            for (r, &prefix) in prefixes.iter().enumerate() {
-                let extended = permutation(4 * g + r) | (u32::from(prefix) * 0x0404_0404);
-                block[4 * r..4 * r + 4].copy_from_slice(&extended.to_le_bytes());
-            }
-            entry.top[16 * g..16 * g + 16].copy_from_slice(&block);
-        }
+    // The highest sample digits (a constant count per layout, so each
+    // count gets its own unrolled copy).
+    let top = &levels[..first_pixel_digit];
+    match top_digits(m) {
+        0 => entry.top[0] = 0,
+        1 => fill_top::<1>(&mut entry.top, top, steps),
+        2 => fill_top::<2>(&mut entry.top, top, steps),
+        3 => fill_top::<3>(&mut entry.top, top, steps),
+        _ => fill_top::<4>(&mut entry.top, top, steps),
     }
     let high = entry.upper >> 32;
     if !entry.seeded || entry.high != high {
@@ -187,6 +170,38 @@ pub(super) fn refresh(
     }
     entry.code = code;
     entry.valid = true;
+}
+
+/// Fills `top` with the permuted values of the `T` highest sample digits:
+/// the `j`-th from the top is the last but `j` of `levels` (the first
+/// steps of the sample digits' level hashes); its permutation is chosen by
+/// the pixel code and the `j` digits above it (value `v`). Each pass
+/// extends the permuted prefixes of `j` digits (`top[v]`) by one digit, in
+/// place from the end, four prefixes at a time (entries `16g..16g + 16`
+/// are written after prefixes `4g..4g + 4` are read).
+#[inline(always)]
+fn fill_top<const T: usize>(top: &mut [u8; TOP_LEN], levels: &[u64], steps: &PixelSteps) {
+    let levels: &[u64; T] = levels[levels.len() - T..].try_into().expect("T levels");
+    for j in 0..T {
+        // Every input is `level ^ (code << 2j) ^ v` (`v < 4^j`), whose
+        // first step is `first ^ v`.
+        let first = levels[T - 1 - j] ^ steps.top[j & 3];
+        let permutation = |v: usize| SPREAD_PERMUTATIONS[permutation_index(first ^ v as u64)];
+        if j == 0 {
+            top[..4].copy_from_slice(&permutation(0).to_le_bytes());
+            continue;
+        }
+        for g in (0..1usize << (2 * j - 2)).rev() {
+            let g = g & (TOP_LEN / 16 - 1);
+            let prefixes: [u8; 4] = core::array::from_fn(|r| top[4 * g + r]);
+            let mut block = [0u8; 16];
+            for (r, &prefix) in prefixes.iter().enumerate() {
+                let extended = permutation(4 * g + r) | (u32::from(prefix) * 0x0404_0404);
+                block[4 * r..4 * r + 4].copy_from_slice(&extended.to_le_bytes());
+            }
+            top[16 * g..16 * g + 16].copy_from_slice(&block);
+        }
+    }
 }
 
 /// Brings `entry.upper` and `entry.upper_words` (and the kept pixel digit
