@@ -307,13 +307,8 @@ mod tests {
             FilterTable::new([1.0, 1.0], |x, _| if x < 0.0 { -1.0 } else { 3.0 }),
             FilterTable::new([0.5, 0.5], |x, y| (x * y).max(0.0)),
         ];
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 40) as f32 / (1u64 << 24) as f32
-        };
+        let mut rng = lowdisc::pcg::Pcg32::new(0x9e37_79b9_7f4a_7c15, 0);
+        let mut next = || rng.next_f32();
         let edges = [
             0.0,
             0.5,

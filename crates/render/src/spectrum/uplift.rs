@@ -210,13 +210,8 @@ mod tests {
         // Random colours (some above 1, for `unbounded`), each asked for
         // twice, far apart and interleaved (so that slots are refilled and
         // hit), plus greys, zeros of both signs, negatives and NaN.
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 40) as f32 / (1u64 << 22) as f32
-        };
+        let mut rng = lowdisc::pcg::Pcg32::new(0x2545_f491_4f6c_dd1d, 0);
+        let mut next = || 4.0 * rng.next_f32();
         let mut inputs: Vec<Rgb> = (0..500).map(|_| Rgb::new(next(), next(), next())).collect();
         inputs.extend([
             Rgb::splat(0.5),
