@@ -36,16 +36,27 @@ pub trait PixelSampler {
     where
         Self: Sized,
     {
-        // A plain loop: the array helpers' closures do not always inline.
-        let mut values = [[0.0; 2]; N];
-        for (value, d) in values.iter_mut().zip(dims) {
-            *value = match d {
-                Dims::One => [self.get_1d(), 0.0],
-                Dims::Two => self.get_2d(),
-            };
-        }
-        values
+        values_in_order(self, dims)
     }
+}
+
+/// [`PixelSampler::get_values`] by one [`PixelSampler::get_1d`] or
+/// [`PixelSampler::get_2d`] call per entry of `dims`, in order: the
+/// definition, and the path of a sampler with no faster one.
+#[inline(always)]
+pub(crate) fn values_in_order<S: PixelSampler + ?Sized, const N: usize>(
+    sampler: &mut S,
+    dims: [Dims; N],
+) -> [[f32; 2]; N] {
+    // A plain loop: the array helpers' closures do not always inline.
+    let mut values = [[0.0; 2]; N];
+    for (value, d) in values.iter_mut().zip(dims) {
+        *value = match d {
+            Dims::One => [sampler.get_1d(), 0.0],
+            Dims::Two => sampler.get_2d(),
+        };
+    }
+    values
 }
 
 /// The dimensions of one value of [`PixelSampler::get_values`].
@@ -136,16 +147,9 @@ pub trait WordSampler {
     #[inline(always)]
     fn get_values<const N: usize>(&mut self, dims: [Dims; N]) -> [[f32; 2]; N]
     where
-        Self: Sized,
+        Self: Sized + PixelSampler,
     {
-        let mut values = [[0.0; 2]; N];
-        for (value, d) in values.iter_mut().zip(dims) {
-            *value = match d {
-                Dims::One => [self.get_1d_value(), 0.0],
-                Dims::Two => self.get_2d_values(),
-            };
-        }
-        values
+        values_in_order(self, dims)
     }
 }
 

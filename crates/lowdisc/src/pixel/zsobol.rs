@@ -332,14 +332,7 @@ impl WordSampler for ZSobolSampler {
             }
             return values;
         }
-        let mut values = [[0.0; 2]; N];
-        for (value, d) in values.iter_mut().zip(dims) {
-            *value = match d {
-                Dims::One => [self.get_1d_value(), 0.0],
-                Dims::Two => self.get_2d_values(),
-            };
-        }
-        values
+        super::values_in_order(self, dims)
     }
 }
 
