@@ -7,9 +7,7 @@
 //! image texture flips `t` before looking up (see [`super::ImageTexture`]).
 
 use super::TextureError;
-use lowdisc_image::{
-    ImageFormat, ReadOptions, RgbImage, read_image_with, srgb_decode, srgb8_decode,
-};
+use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, Transfer, read_image_with, srgb_decode};
 use std::path::Path;
 
 /// How the 8-bit (or 16-bit) codes of a PNG or TGA file become linear
@@ -61,23 +59,10 @@ impl ColorEncoding {
     /// Decodes a normalised code `v` in `[0,1]`.
     pub fn decode(self, v: f32) -> f32 {
         match self {
-            ColorEncoding::Srgb => srgb_decode_code(v),
+            ColorEncoding::Srgb => srgb_decode(v),
             ColorEncoding::Linear => v,
             ColorEncoding::Gamma(g) => v.max(0.0).powf(g),
         }
-    }
-}
-
-/// [`srgb_decode`] of `v`, from the 8-bit table when `v` is exactly an
-/// 8-bit code `k / 255` (as 8-bit images are read): the table holds
-/// `srgb_decode(k as f32 / 255.0)`, so the value is the same, without a
-/// `powf` per texel channel.
-fn srgb_decode_code(v: f32) -> f32 {
-    let k = (v * 255.0).round();
-    if (0.0..=255.0).contains(&k) && (k as u8) as f32 / 255.0 == v {
-        srgb8_decode(k as u8)
-    } else {
-        srgb_decode(v)
     }
 }
 
@@ -121,9 +106,15 @@ impl TexImage {
     /// Reads an image file; for 8-bit/16-bit formats the codes are decoded
     /// with `encoding`, float formats are taken as they are.
     pub fn load(path: &Path, encoding: ColorEncoding) -> Result<TexImage, TextureError> {
-        let image = read_image_with(path, &ReadOptions::raw())?;
+        // sRGB codes are decoded by the reader (8-bit ones from its table of
+        // the curve's values, without a `powf` per texel channel).
+        let transfer = match encoding {
+            ColorEncoding::Srgb => Transfer::Srgb,
+            _ => Transfer::Raw,
+        };
+        let image = read_image_with(path, &ReadOptions { transfer })?;
         let float = ImageFormat::from_extension(path).is_some_and(|f| f.is_high_dynamic_range());
-        if float || encoding == ColorEncoding::Linear {
+        if float || !matches!(encoding, ColorEncoding::Gamma(_)) {
             return Ok(TexImage { image });
         }
         Ok(TexImage {
@@ -186,12 +177,18 @@ mod tests {
     use super::*;
 
     #[test]
-    fn srgb_decoding_by_table_is_the_curve_bit_for_bit() {
-        let codes = (0..=255u8).map(|k| f32::from(k) / 255.0);
-        let others = [0.5, 1e-3, 0.04045, -0.25, 1.5, 2.0 / 255.0 + 1e-7, f32::NAN];
-        for v in codes.chain(others) {
-            let got = ColorEncoding::Srgb.decode(v);
-            assert_eq!(got.to_bits(), srgb_decode(v).to_bits(), "{v}");
+    fn srgb_textures_hold_the_curve_of_every_8_bit_code_bit_for_bit() {
+        let codes: Vec<[f32; 3]> = (0..=255u8).map(|k| [f32::from(k) / 255.0; 3]).collect();
+        let path = std::env::temp_dir().join(format!("lowdisc-srgb-{}.png", std::process::id()));
+        // Written from the raw codes, so that each texel holds its code.
+        let raw = RgbImage::from_pixels(256, 1, codes.clone()).unwrap();
+        let encoded = raw.map(|p| p.map(srgb_decode));
+        lowdisc_image::write_png(&path, &encoded, 1.0).unwrap();
+        let texture = TexImage::load(&path, ColorEncoding::Srgb).unwrap();
+        let _ = std::fs::remove_file(&path);
+        for (k, code) in codes.iter().enumerate() {
+            let got = texture.texel(k as i64, 0, WrapMode::Clamp)[0];
+            assert_eq!(got.to_bits(), srgb_decode(code[0]).to_bits(), "code {k}");
         }
     }
 }
