@@ -286,5 +286,15 @@ pub fn run(experiment: &Experiment) -> Result<()> {
     let reporter = Reporter::new(experiment.quiet);
     let outcome = lowdisc_experiment::run(&experiment.config, &reporter)?;
     reporter.summary(&outcome.files);
+    print_answer(&outcome, std::io::stdout().lock())
+}
+
+/// Prints the answer to the paper's question, the command's last line, to
+/// `out` (stdout; with `--quiet` too: it is the result, not progress).
+pub fn print_answer(
+    outcome: &lowdisc_experiment::Outcome,
+    mut out: impl std::io::Write,
+) -> Result<()> {
+    writeln!(out, "{}", outcome.answer)?;
     Ok(())
 }

@@ -94,7 +94,7 @@ pub fn run(action: Action, out: impl Write) -> Result<()> {
             let reporter = Reporter::new(args.quiet);
             let outcome = lowdisc_experiment::planned::merge(&args.dir, &reporter)?;
             reporter.summary(&outcome.files);
-            Ok(())
+            crate::experiment::print_answer(&outcome, out)
         }
         Action::Status(args) => {
             let status = lowdisc_experiment::status::status(&args.dir)?;

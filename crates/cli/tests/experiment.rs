@@ -51,6 +51,12 @@ fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
     }
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     assert!(md.contains("| paper-repro"), "{md}");
+    // The report answers the paper's question first.
+    assert!(
+        md.starts_with("# Does the paper's permuted Sobol beat Sobol?\n\n## Answer\n\n"),
+        "{md}"
+    );
+    assert!(!md.contains("busy machine"), "{md}");
     // The linear EXR of seed 0 against the reference EXR gives the relMSE
     // that results.json reports for that run.
     let reference = lowdisc_image::read_image(out.join("reference.exr")).unwrap();

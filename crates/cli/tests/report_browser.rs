@@ -1,6 +1,7 @@
 //! The experiment's report.html in a real browser (headless Chromium): the
-//! page renders to a screenshot, shows no raw Markdown, and every image
-//! loads in the browser and is a file that decodes.
+//! page opens with the answer to the paper's question, renders to a
+//! screenshot, shows no raw Markdown, and every image loads in the browser
+//! and is a file that decodes.
 //!
 //! Without Chromium (`chromium` on the PATH, or the program named by
 //! `LOWDISC_CHROMIUM`) the test prints a note and passes, unless
@@ -60,6 +61,18 @@ fn image_sources(html: &str) -> Vec<String> {
         .collect()
 }
 
+/// The HTML from the page's title to its second `<h2>`: the title and the
+/// first section.
+fn first_section(html: &str) -> String {
+    let start = html.find("<h1>").expect("a title");
+    let rest = &html[start..];
+    let first = rest.find("<h2>").expect("a first section");
+    let end = rest[first + 4..]
+        .find("<h2>")
+        .map_or(rest.len(), |e| first + 4 + e);
+    rest[..end].to_string()
+}
+
 /// The text of `html` without its tags.
 fn text_of(html: &str) -> String {
     let mut text = String::new();
@@ -97,6 +110,14 @@ fn report_renders_in_chromium_with_every_image_and_no_raw_markdown() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // With --quiet the answer is still printed: the command's only line.
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.starts_with("answer: the paper's claim (0.92x Sobol's error at 16 spp) is ")
+            && stdout.contains(": paper-repro has ")
+            && stdout.lines().count() == 1,
+        "{stdout}"
+    );
     let report = out.join("report.html");
 
     // The page as the browser built it: no Markdown left over.
@@ -109,6 +130,32 @@ fn report_renders_in_chromium_with_every_image_and_no_raw_markdown() {
             "raw Markdown `{raw}` in the page: {text}"
         );
     }
+
+    // The page opens with the answer: the first section after the title,
+    // naming the paper, its claim, the verdict and the measured ratio with
+    // its interval, before the settings and the tables.
+    let answer = first_section(&dom);
+    for needed in [
+        "<h2>Answer</h2>",
+        "Song &amp; Ro 2019",
+        "92.0 % of Sobol's error at 16 spp",
+        "The claim is ",
+        "<code>paper-repro</code> has ",
+        "x [",
+    ] {
+        assert!(
+            answer.contains(needed),
+            "no `{needed}` in the first section: {answer}"
+        );
+    }
+    let claim = ["reproduced", "not reproduced", "not shown"]
+        .iter()
+        .any(|v| answer.contains(&format!("The claim is {v} by this run.")));
+    assert!(claim, "no verdict in the first section: {answer}");
+    assert!(!answer.contains("<table>"), "{answer}");
+    let order = |s: &str| dom.find(s).unwrap_or_else(|| panic!("no {s}"));
+    assert!(order("<h2>Answer</h2>") < order("<h2>Settings</h2>"));
+    assert!(order("<h2>Settings</h2>") < order("<h2>Summary</h2>"));
 
     // Every image: a file that decodes, and loaded by the browser (a copy
     // of the page with a script that lists the images that did not load).

@@ -21,6 +21,7 @@ use crate::estimate::calibrate;
 use crate::plan::{Plan, shares_reference};
 use crate::progress::Progress;
 use crate::reference::cached_references;
+use crate::report::answer::Answer;
 use crate::results::Results;
 use crate::scene;
 use crate::stats::{FNV_OFFSET, fnv1a};
@@ -112,6 +113,9 @@ pub struct Outcome {
     pub files: Vec<PathBuf>,
     /// Wall time of the whole run, seconds.
     pub seconds: f64,
+    /// The answer to the paper's question in one line
+    /// ([`crate::report::answer::Answer::line`]).
+    pub answer: String,
 }
 
 impl Outcome {
@@ -132,7 +136,11 @@ impl Outcome {
             "report written to {}",
             config.out.join("report.md").display()
         ));
-        Outcome { files, seconds }
+        Outcome {
+            files,
+            seconds,
+            answer: Answer::of(config, results).line(),
+        }
     }
 }
 

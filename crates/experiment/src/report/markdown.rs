@@ -1,4 +1,5 @@
-//! `report.md`: the settings, the summary table (the deciding columns:
+//! `report.md`: the answer to the paper's question ([`super::answer`]),
+//! the settings, the summary table (the deciding columns:
 //! error ratio to `sobol` with its interval, relMSE, time), a details table
 //! with every other metric, the images side by side per sampler, the
 //! convergence plot, the threshold sweep and the figure, in Markdown.
@@ -6,10 +7,11 @@
 
 use std::fmt::Write as _;
 
+use super::answer::Answer;
 use crate::comparison::relmse_ratio;
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::results::{Results, SamplerResult};
-use crate::stats::MeanSd;
+use crate::stats::{MeanSd, Verdict};
 
 /// Render times whose sd over a sampler's runs exceeds this fraction of
 /// their mean get a note.
@@ -25,12 +27,19 @@ fn ms(m: MeanSd) -> String {
 }
 
 /// The paired relMSE ratio to `sobol` with its interval (the statistics'
-/// `relmse` entry); without one (a single run, or `sobol` itself) the ratio
-/// of the means alone.
+/// `relmse` entry), bold when the interval excludes 1; without one (a
+/// single run, or `sobol` itself) the ratio of the means alone.
 fn ratio_cell(s: &SamplerResult) -> String {
     match (relmse_ratio(s), s.relmse_ratio_to_sobol) {
-        (Some(p), _) => format!("**{:.3}** ({:.3} to {:.3})", p.ratio, p.ci95[0], p.ci95[1]),
-        (None, Some(r)) => format!("**{r:.3}**"),
+        (Some(p), _) => {
+            let ratio = format!("{:.3}", p.ratio);
+            let ratio = match p.verdict {
+                Verdict::NotDistinguishable => ratio,
+                _ => format!("**{ratio}**"),
+            };
+            format!("{ratio} ({:.3} to {:.3})", p.ci95[0], p.ci95[1])
+        }
+        (None, Some(r)) => format!("{r:.3}"),
         (None, None) => "-".into(),
     }
 }
@@ -101,10 +110,7 @@ fn notes(results: &Results) -> String {
         .filter(|s| s.time_s.mean > 0.0)
         .map(|s| (s.time_s.sd / s.time_s.mean, s.name.as_str()))
         .max_by(|a, b| a.0.total_cmp(&b.0));
-    out.push_str(
-        "Times are wall-clock render times on this machine and change with its load \
-(the same run took 1.8 times as long on a busy machine)",
-    );
+    out.push_str("Times are wall-clock render times on this machine and change with its load");
     match spread {
         Some((cv, name)) if cv > TIME_SPREAD_NOTE => {
             let _ = write!(
@@ -137,7 +143,7 @@ pub fn markdown(config: &ExperimentConfig, results: &Results, wall: f64, heat_to
         );
     }
     let mut md = format!(
-        "# lowdisc experiment\n\nScene: {scene}. {w}x{h}, {} spp, {} runs per sampler (seeds 0..{}), max depth {}. \
+        "# Does the paper's permuted Sobol beat Sobol?\n\n{}## Settings\n\nScene: {scene}. {w}x{h}, {} spp, {} runs per sampler (seeds 0..{}), max depth {}. \
 Reference: {} spp with `{}` (seed {REF_SEED}), {}. Wall time {wall:.1} s.\n\n\
 ## Summary\n\n\
 The deciding column is the linear relMSE relative to `sobol`'s, the paper's baseline (below 1: fewer errors than Sobol), \
@@ -146,6 +152,7 @@ from paired seeds (run i of both with seed i): the geometric mean of the per-see
 Errors are against the reference; ± is the sample standard deviation over runs. \
 relMSE is `(x-r)^2/(r^2+0.01)` averaged over pixels and channels. \
 The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 1..{}, at {}x{} against a {}-spp reference).\n\n",
+        Answer::of(config, results).markdown(),
         config.spp,
         config.runs,
         config.runs,
@@ -285,7 +292,7 @@ mod tests {
         let mut a = result("zsobol", 0.5);
         a.relmse_ratio_to_sobol = Some(0.8);
         let one_run = summary_table(&results(vec![a.clone()]));
-        assert!(one_run.contains("| zsobol | **0.800** |"), "{one_run}");
+        assert!(one_run.contains("| zsobol | 0.800 |"), "{one_run}");
         // The paired entry, not the ratio of the means, when there is one.
         let (seeds, base) = ([1.0, 2.0, 4.0], [2.0, 4.0, 8.0]);
         let paired = crate::stats::paired_ratio(&seeds, &base).unwrap();
@@ -301,5 +308,22 @@ mod tests {
             "{t}"
         );
         assert!(t.contains("| zsobol | **0.500** (0.500 to 0.500) |"), "{t}");
+        // An interval that contains 1 is not bold.
+        let (seeds, base) = ([1.0, 2.0, 4.0], [2.0, 1.0, 4.0]);
+        a = result("halton", 1.0);
+        a.statistics = vec![crate::comparison::MetricStats {
+            metric: "relmse",
+            summary: crate::stats::Summary::of(&seeds),
+            ratio_to_baseline: crate::stats::paired_ratio(&seeds, &base),
+        }];
+        let t = summary_table(&results(vec![a]));
+        assert!(t.contains("| halton | 1.000 ("), "{t}");
+        assert!(!t.contains("**"), "{t}");
+    }
+
+    #[test]
+    fn the_notes_speak_of_this_run_only() {
+        let text = notes(&results(vec![result("sobol", 1.0)]));
+        assert!(!text.contains("busy machine"), "{text}");
     }
 }

@@ -1,9 +1,11 @@
-//! Writing the report folder: images ([`images`]: linear EXR, sRGB PNG,
+//! Writing the report folder: the answer to the paper's question
+//! ([`answer`], the report's first section), images ([`images`]: linear EXR, sRGB PNG,
 //! crops, error heatmaps), charts ([`charts`]), `results.json` ([`json`]),
 //! `report.md` ([`markdown`]) and `report.html` ([`html`], the same
 //! content as a web page). Every file goes through a temporary file and a
 //! rename.
 
+pub mod answer;
 pub mod charts;
 pub mod html;
 pub mod images;
