@@ -46,10 +46,12 @@ the image of every image-based infinite light. Unsupported directives and\n\
 parameters are warnings with file:line:column; syntax errors are errors.\n\
 \n\
 The renderer is a unidirectional path tracer with next-event estimation and\n\
-MIS, in RGB. Every random decision comes from the chosen pixel sampler, in a\n\
-fixed order of dimensions (film position, lens, then seven per bounce: light\n\
-choice, light position, BSDF lobe, BSDF direction, Russian roulette). The\n\
-output is bit-identical for the same options whatever --threads is.\n\
+MIS, in RGB by default or spectrally as pbrt-v4 with --spectral. Every random\n\
+decision comes from the chosen pixel sampler, in a fixed order of dimensions\n\
+(with --spectral the wavelengths first; film position, lens, then seven per\n\
+bounce: light choice, light position, BSDF lobe, BSDF direction, Russian\n\
+roulette). The output is bit-identical for the same options whatever\n\
+--threads is.\n\
 \n\
 Output: .exr (linear float), .png (8-bit sRGB), .pfm or .hdr, written to a\n\
 temporary file and renamed into place.\n\
