@@ -10,7 +10,7 @@ use clap::Args;
 use lowdisc::catalog::SamplerConfig;
 use lowdisc_experiment::figure::figure;
 
-use crate::parse;
+use crate::{default_output, parse};
 
 /// The image the figure samples: 2x2 pixels, as in the paper.
 const RESOLUTION: [u32; 2] = [2, 2];
@@ -26,9 +26,9 @@ depends on call order.";
 /// The arguments of `figure`.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
-    /// Output file, .png or .svg.
-    #[arg(long, short = 'o', value_name = "FILE", default_value = "figure.png")]
-    output: PathBuf,
+    /// Output file, .png or .svg [default: out/figure.png, out/ created]
+    #[arg(long, short = 'o', value_name = "FILE")]
+    output: Option<PathBuf>,
     /// Samplers, one panel each, comma-separated.
     #[arg(
         long,
@@ -60,13 +60,19 @@ pub struct FigureArgs {
 #[derive(Debug, Clone)]
 pub struct FigureConfig {
     output: PathBuf,
+    /// Whether to create the output's folder (the default `out/`).
+    create_dir: bool,
     samplers: Vec<SamplerConfig>,
 }
 
 impl FigureArgs {
     /// Checks every option and builds the configuration.
     pub fn into_config(self) -> Result<FigureConfig> {
-        lowdisc_plot::Format::from_path(&self.output)?;
+        let create_dir = self.output.is_none();
+        let output = self
+            .output
+            .unwrap_or_else(|| default_output::path("figure.png"));
+        lowdisc_plot::Format::from_path(&output)?;
         if self.spp == 0 {
             bail!("--spp must be at least 1");
         }
@@ -92,7 +98,8 @@ impl FigureArgs {
             })
             .collect::<Result<Vec<_>>>()?;
         Ok(FigureConfig {
-            output: self.output,
+            output,
+            create_dir,
             samplers,
         })
     }
@@ -105,6 +112,11 @@ pub fn run(config: &FigureConfig) -> Result<()> {
         "{}x{} pixels, {} samples per pixel (seed {})",
         RESOLUTION[0], RESOLUTION[1], first.spp, first.seed
     );
-    figure(&config.samplers, 300.0, title)?.save(&config.output)?;
+    let canvas = figure(&config.samplers, 300.0, title)?;
+    if config.create_dir {
+        default_output::create_dir()?;
+    }
+    canvas.save(&config.output)?;
+    default_output::report_written(&config.output);
     Ok(())
 }

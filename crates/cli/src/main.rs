@@ -26,6 +26,7 @@
 
 mod claim;
 mod claim_report;
+mod default_output;
 mod discrepancy;
 mod experiment;
 mod experiment_units;
@@ -131,14 +132,50 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(err) if is_broken_pipe(&err) => ExitCode::SUCCESS,
         Err(err) => {
-            report_error(&format!("{err:#}"));
+            report_error(&error_line(&err));
             ExitCode::FAILURE
         }
     }
+}
+
+/// The error and its causes joined by `: `, leaving out a cause whose text
+/// the line already holds (an I/O error both quoted in its context and
+/// chained as its source would otherwise appear twice).
+fn error_line(err: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in err.chain() {
+        let text = cause.to_string();
+        if line.contains(&text) {
+            continue;
+        }
+        if !line.is_empty() {
+            line.push_str(": ");
+        }
+        line.push_str(&text);
+    }
+    line
 }
 
 /// Prints `error: MESSAGE` as one line on stderr. A stderr that cannot be
 /// written (closed, or a full disk) is ignored: the exit status still tells.
 fn report_error(message: &str) {
     let _ = writeln!(io::stderr(), "error: {}", message.replace('\n', " "));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_error_line_names_each_cause_once() {
+        let io = io::Error::new(io::ErrorKind::NotFound, "No such file (os error 2)");
+        let quoted = format!("cannot write `x.png`: {io}");
+        let err = anyhow::Error::new(io)
+            .context(quoted)
+            .context("cannot draw");
+        assert_eq!(
+            error_line(&err),
+            "cannot draw: cannot write `x.png`: No such file (os error 2)"
+        );
+    }
 }

@@ -12,7 +12,7 @@ use lowdisc::catalog::{DEFAULT_TILE_SIZE, Order, SamplerConfig, generate_points}
 use lowdisc_render::render::MAX_TILE_SIZE;
 
 use crate::output::{Format, TableWriter};
-use crate::{parse, plots};
+use crate::{default_output, parse, plots};
 
 /// Point order for the Sobol family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -259,7 +259,9 @@ pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
                     dims.start,
                     dims.start + 1
                 );
-                return plots::unit_square(&title, points.collect(), *n, path);
+                plots::unit_square(&title, points.collect(), *n, path)?;
+                default_output::report_written(path);
+                return Ok(());
             }
             let columns: Vec<String> = dims.clone().map(|d| format!("x{d}")).collect();
             let mut table = TableWriter::new(out, config.format, &columns);
@@ -279,7 +281,9 @@ pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
                     positions.push([row[0], row[1]]);
                     Ok(())
                 })?;
-                return plots::pixel(&config.sampler, *pixel, positions, path);
+                plots::pixel(&config.sampler, *pixel, positions, path)?;
+                default_output::report_written(path);
+                return Ok(());
             }
             let mut columns = vec!["film_x".to_string(), "film_y".to_string()];
             columns.extend((0..*extra_dims).map(|d| format!("v{d}")));

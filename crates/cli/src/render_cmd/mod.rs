@@ -97,8 +97,8 @@ pub struct RenderArgs {
     /// Environment map replacing a scene's missing one (scene files only).
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
-    /// Output image: .exr, .png, .pfm or .hdr [default: the scene's Film
-    /// filename, else render.exr].
+    /// Output image: .exr, .png, .pfm or .hdr [default: in out/ (created),
+    /// the scene's Film filename, else render.exr].
     #[arg(long, short = 'o', value_name = "OUT")]
     output: Option<PathBuf>,
     /// Paper permutation threshold in [0,1] (samplers paper and paper-repro):

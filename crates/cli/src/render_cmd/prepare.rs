@@ -16,7 +16,7 @@ use lowdisc_render::render::{MAX_SPP, RenderOptions};
 use lowdisc_render::scene::Scene;
 
 use super::RenderConfig;
-use crate::limits;
+use crate::{default_output, limits};
 
 /// The output must have a known extension and an existing directory.
 pub(super) fn check_output(path: &Path) -> Result<()> {
@@ -63,7 +63,7 @@ pub(super) fn prepare(
     let mut sampler = SamplerName::ZSobol;
     let mut spp = 16;
     let mut max_depth = 5;
-    let mut output = PathBuf::from("render.exr");
+    let mut output = default_output::path("render.exr");
     let scene = match &config.scene {
         None => cornell_box(config.resolution.unwrap_or([512, 512]))?,
         Some(path) => {
@@ -93,7 +93,7 @@ pub(super) fn prepare(
                 );
             }
             if let Some(name) = &s.output {
-                output = scene_output(name);
+                output = default_output::path(scene_output(name));
             }
             loaded.scene
         }
@@ -121,7 +121,13 @@ pub(super) fn prepare(
         samples: config.samples,
         spectral: config.spectral,
     };
-    let output = config.output.clone().unwrap_or(output);
+    let output = match &config.output {
+        Some(given) => given.clone(),
+        None => {
+            default_output::create_dir()?;
+            output
+        }
+    };
     check_output(&output)?;
     if config.is_part() && !crate::split_cmd::is_exr(&output) {
         bail!(
@@ -139,8 +145,9 @@ pub(super) fn prepare(
     Ok((scene, options, output))
 }
 
-/// The output a scene's `Film` filename asks for, in the current directory;
-/// an extension this command cannot write becomes `.exr`.
+/// The file name a scene's `Film` filename asks for (written to
+/// [`default_output::DIR`]); an extension this command cannot write becomes
+/// `.exr`.
 fn scene_output(name: &str) -> PathBuf {
     let file = Path::new(name)
         .file_name()
