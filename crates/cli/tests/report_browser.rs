@@ -118,6 +118,10 @@ fn report_renders_in_chromium_with_every_image_and_no_raw_markdown() {
             && stdout.lines().count() == 1,
         "{stdout}"
     );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("results.json")).unwrap()).unwrap();
+    assert_eq!(json["answer"]["line"].as_str(), Some(stdout.trim_end()));
+    assert_eq!(json["answer"]["paper"]["sampler"], "paper-repro");
     let report = out.join("report.html");
 
     // The page as the browser built it: no Markdown left over.

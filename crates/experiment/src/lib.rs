@@ -61,8 +61,11 @@
 //!   srgb8: {...}, quality: {masked: {mse, relmse, rmse, mae}, blurred_mse,
 //!   flip}}], convergence: [{spp, relmse}], convergence_slope }],
 //!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}],
-//!   kept_fraction, wall_time_s }`; settings also hold preset (name or null),
-//!   emitter_border, blur_sigma and baseline.
+//!   kept_fraction, wall_time_s, answer: {claimed_ratio, claimed_spp,
+//!   verdict, paper: {sampler, ratio, ci95 or null} or null, best: {...} or
+//!   null, line} }`; settings also hold preset (name or null),
+//!   emitter_border, blur_sigma and baseline. `answer` is the report's first
+//!   section ([`report::answer`]).
 //!
 //! The reference (`ref_spp` samples per pixel with `sobol-owen`, an
 //! unbiased randomised sampler, seed [`REF_SEED`]) is cached as PFM in

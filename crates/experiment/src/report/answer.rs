@@ -20,6 +20,9 @@ pub const PAPER_CLAIMED_RATIO: f64 = 12.7090 / 13.8215;
 /// reading.
 const PAPER_SAMPLERS: [&str; 2] = ["paper", "paper-repro"];
 
+/// The samples per pixel of the paper's measurement.
+pub const PAPER_SPP: u32 = 16;
+
 /// One sampler's relMSE relative to [`BASELINE`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Measured {
@@ -199,7 +202,7 @@ impl Answer {
             "## Answer\n\n\
 The paper (Song & Ro 2019, \"A Method for Better Quality with Improved Sample Sequence in 3D Rendering\") \
 claims that permuting the binary digits of Sobol's generator matrices gives about the same render time and \
-{:.1} % of Sobol's error at 16 spp (8 % less). **The claim is {} by this run.** {} {}\n\n\
+{:.1} % of Sobol's error at {PAPER_SPP} spp (8 % less). **The claim is {} by this run.** {} {}\n\n\
 Ratios are of linear relMSE to `{BASELINE}` (pbrt-v3's global Sobol, the paper's baseline), the geometric mean \
 of the per-seed ratios with its 95 % interval; below 1 is less error than Sobol. Bold in the tables below marks \
 a ratio whose interval excludes 1.\n\n",
@@ -210,10 +213,33 @@ a ratio whose interval excludes 1.\n\n",
         )
     }
 
+    /// The answer for `results.json`: the claim, the verdict, the paper's
+    /// sampler and the best sampler with their ratios and intervals, and
+    /// [`Answer::line`].
+    pub fn json(&self) -> serde_json::Value {
+        let measured = |m: &Option<Measured>| {
+            m.as_ref().map(|m| {
+                serde_json::json!({
+                    "sampler": m.name,
+                    "ratio": m.ratio,
+                    "ci95": m.interval.map(|(ci, _)| ci),
+                })
+            })
+        };
+        serde_json::json!({
+            "claimed_ratio": PAPER_CLAIMED_RATIO,
+            "claimed_spp": PAPER_SPP,
+            "verdict": self.verdict(),
+            "paper": measured(&self.paper),
+            "best": measured(&self.best),
+            "line": self.line(),
+        })
+    }
+
     /// One line for the end of the command's output.
     pub fn line(&self) -> String {
         let claim = format!(
-            "the paper's claim ({:.2}x Sobol's error at 16 spp) is {}",
+            "the paper's claim ({:.2}x Sobol's error at {PAPER_SPP} spp) is {}",
             PAPER_CLAIMED_RATIO,
             self.verdict()
         );
@@ -293,6 +319,11 @@ mod tests {
         assert!(md.contains("higher error than Sobol's"), "{md}");
         assert!(md.contains("`paper` has **2.024x [1.868, 2.194]**"), "{md}");
         assert!(md.contains("Best sampler: `sobol-xor`"), "{md}");
+        let json = a.json();
+        assert_eq!(json["verdict"], "not reproduced");
+        assert_eq!(json["paper"]["sampler"], "paper");
+        assert_eq!(json["best"]["sampler"], "sobol-xor");
+        assert!(json["paper"]["ci95"][0].as_f64().unwrap() > 1.0, "{json}");
         let line = a.line();
         assert!(
             line.starts_with("answer: the paper's claim (0.92x"),

@@ -4,6 +4,7 @@
 use anyhow::Result;
 use serde_json::json;
 
+use super::answer::Answer;
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::plan::{Target, reference_cut};
 use crate::results::Results;
@@ -73,6 +74,7 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
         "threshold_sweep": results.threshold_sweep,
         "kept_fraction": results.kept_fraction,
         "wall_time_s": wall,
+        "answer": Answer::of(config, results).json(),
     });
     Ok(serde_json::to_string_pretty(&value)?)
 }

@@ -234,7 +234,8 @@ samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, sr
 relmse_ratio_to_sobol, relmse_ratio_interval, statistics: [{metric, summary: {n, mean, sd, se, ci95}, ratio_to_baseline: \
 {n, ratio, ci95, log_ratio, ratio_of_means, verdict} or null}], \
 runs: [{seed, time_s, linear, srgb8, quality: {masked, blurred_mse, flip}}], convergence: [{spp, relmse}], convergence_slope}], \
-threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], kept_fraction, wall_time_s}`; \
+threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], kept_fraction, wall_time_s, \
+answer: {claimed_ratio, claimed_spp, verdict, paper: {sampler, ratio, ci95}, best: {sampler, ratio, ci95}, line}}`; \
 the other metric summaries are `{mean, sd}`.\n");
     md
 }
