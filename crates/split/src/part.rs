@@ -174,6 +174,10 @@ pub fn settings(opts: &RenderOptions, film: &FilmParams) -> BTreeMap<String, Str
     .collect()
 }
 
+/// The first line of what [`scene_hash`] hashes, raised whenever what it
+/// covers changes.
+pub const SCENE_HASH_VERSION: &str = "lowdisc scene hash 2: scene content, camera, filter";
+
 /// The SHA-256 (hexadecimal) of the parsed scene and of how the view sees
 /// it: [`Scene::write_content`] (every shape, material, light) and the
 /// view's camera and pixel filter, streamed through the hasher, never held
@@ -183,6 +187,8 @@ pub fn settings(opts: &RenderOptions, film: &FilmParams) -> BTreeMap<String, Str
 /// agree.
 pub fn scene_hash(scene: &Scene, view: &View) -> String {
     let mut sink = HashSink(Sha256::new());
+    // The version of what is hashed: parts of another version never merge.
+    let _ = writeln!(sink, "{SCENE_HASH_VERSION}");
     // The sink never fails, and `Debug` of the scene's data never fails.
     let _ = scene.write_content(&mut sink);
     let _ = write!(sink, "\n{:?}\n{:?}", view.spec().camera, view.filter());

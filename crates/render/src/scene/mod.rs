@@ -254,8 +254,9 @@ impl Scene {
     pub fn light_sampler(&self) -> &LightSampler {
         &self.light_sampler
     }
-    /// Writes, in `Debug` form, everything that determines the scene's
-    /// pixels: shapes, materials, lights, the camera and the film. The
+    /// Writes, in `Debug` form, everything of the scene that determines
+    /// its pixels: shapes, materials, lights and their emission spectra
+    /// (the camera and the film are the view's, [`crate::view`]). The
     /// acceleration structure (derived from the shapes, and carrying its
     /// build time) is left out, so two loads of one scene write the same
     /// text: the input of a content hash.
