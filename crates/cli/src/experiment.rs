@@ -20,8 +20,6 @@ use crate::experiment_units::Action;
 use crate::parse;
 use crate::progress::Reporter;
 
-/// The path depth without a preset.
-const DEFAULT_MAX_DEPTH: u32 = 5;
 /// Runs per sampler on the built-in scene. Measured there (8 seeds, masked
 /// MSE), the paired log-ratio to `sobol` has an sd of 0.015-0.04 for
 /// `sobol-xor`, `padded-sobol` and `independent`, so 8 runs (t = 2.36) give
@@ -222,7 +220,7 @@ impl ExperimentArgs {
             threshold: parse::threshold(self.threshold)?,
             max_depth: self
                 .maxdepth
-                .unwrap_or(preset.map_or(DEFAULT_MAX_DEPTH, |p| p.max_depth())),
+                .unwrap_or(preset.map_or(default_max_depth(), |p| p.max_depth())),
             threads: self.threads,
             spectral: self.spectral,
             unit_samples: self.unit_samples,
@@ -297,4 +295,11 @@ pub fn print_answer(
 ) -> Result<()> {
     writeln!(out, "{}", outcome.answer)?;
     Ok(())
+}
+
+/// The path depth without a preset: the renderer's default.
+fn default_max_depth() -> u32 {
+    lowdisc_render::render::RenderOptions::default()
+        .integrator
+        .max_depth
 }

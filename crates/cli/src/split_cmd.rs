@@ -9,6 +9,7 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 use lowdisc_render::render::{RenderOptions, RenderOutput};
 use lowdisc_render::scene::Scene;
+use lowdisc_render::view::View;
 use lowdisc_split::{NamedPart, RenderPart, merge, read_part, write_part};
 
 /// The long help of `merge`.
@@ -18,9 +19,10 @@ Merge the parts of a split render into one EXR.\n\
 Each part is an EXR written by `lowdisc render --pixel-bounds X0,X1,Y0,Y1`\n\
 and/or `--sample-range A..B`. The parts must come from the same scene (its\n\
 hash) and settings (sampler, seed, spp, threshold, maxdepth, light strategy,\n\
-tile size, resolution, film bounds); together they must cover a rectangle of\n\
-pixels, each pixel by sample ranges that follow each other without overlap or\n\
-gap. Any other input is refused with the part named, and nothing is written.\n\
+layered weight, tile size, spectral mode, film sensor, resolution, film\n\
+bounds); together they must cover a rectangle of pixels, each pixel by sample\n\
+ranges that follow each other without overlap or gap. Any other input is\n\
+refused with the part named, and nothing is written.\n\
 \n\
 A merge of tiles is bit-identical to the single render (for every sampler);\n\
 sample ranges add each pixel's f64 sums in range order, which equals the\n\
@@ -49,14 +51,16 @@ pub fn is_exr(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("exr"))
 }
 
-/// Writes the part that `out` (a render of `scene` with `options`) holds.
+/// Writes the part that `out` (a render of `scene` through `view` with
+/// `options`) holds.
 pub fn write_render_part(
     path: &Path,
     scene: &Scene,
+    view: &View,
     options: &RenderOptions,
     out: &RenderOutput,
 ) -> Result<()> {
-    let part = RenderPart::new(scene, options, out)?;
+    let part = RenderPart::new(scene, view, options, out);
     write_part(path, &part).with_context(|| format!("cannot write `{}`", path.display()))
 }
 

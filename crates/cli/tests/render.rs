@@ -74,8 +74,10 @@ fn renders_the_cornell_box_to_png_and_exr() {
     let image = lowdisc_image::read_image(&exr).unwrap();
     assert_eq!((image.width(), image.height()), (16, 8));
     // The command's defaults (zsobol, seed 0, maxdepth 5) in the library.
+    let (scene, view) = cornell_box([16, 8]).unwrap();
     let expected = render(
-        &cornell_box([16, 8]).unwrap(),
+        &scene,
+        &view,
         &RenderOptions::new(SamplerName::ZSobol, 0, 2),
         &NoProgress,
     )
@@ -115,14 +117,14 @@ fn spectral_flag_renders_what_the_library_renders_spectrally() {
         String::from_utf8_lossy(&out.stderr)
     );
     let image = lowdisc_image::read_image(&exr).unwrap();
-    let scene = cornell_box([16, 8]).unwrap();
+    let (scene, view) = cornell_box([16, 8]).unwrap();
     let opts = |spectral| RenderOptions {
         spectral,
         ..RenderOptions::new(SamplerName::ZSobol, 0, 4)
     };
-    let spectral = render(&scene, &opts(true), &NoProgress).unwrap();
+    let spectral = render(&scene, &view, &opts(true), &NoProgress).unwrap();
     assert_eq!(image.pixels(), spectral.image.pixels());
-    let rgb = render(&scene, &opts(false), &NoProgress).unwrap();
+    let rgb = render(&scene, &view, &opts(false), &NoProgress).unwrap();
     assert_ne!(image.pixels(), rgb.image.pixels());
 }
 

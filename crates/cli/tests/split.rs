@@ -188,13 +188,22 @@ fn bad_parts_are_refused_naming_the_file() {
     refused(&dir, &[left.clone(), seed], &seeds);
     let depths = format!("error: {}: maxdepth 3 differs", p("d-0.exr"));
     refused(&dir, &[left.clone(), depth], &depths);
-    // Another scene: the same window of a taller image.
+    // Parts rendered with another exit weight of layered materials.
+    let weight = ["--layered-weight", "pbrt-v4"];
+    let layered = parts(&dir, "lw", &["12,24,0,16"], &weight).remove(0);
+    let weights = format!(
+        "error: {}: layered_weight pbrt-v4 differs from {}'s unbiased",
+        p("lw-0.exr"),
+        p("l-0.exr")
+    );
+    refused(&dir, &[left.clone(), layered], &weights);
+    // The same window of a taller image.
     let tall = dir.join("tall.exr");
     render_to(&tall, &["--res", "24x17", "--pixel-bounds", "12,24,0,16"]);
     refused(
         &dir,
         &[left.clone(), tall],
-        &format!("error: {}: scene hash", p("tall.exr")),
+        &format!("error: {}: resolution 24x17 differs", p("tall.exr")),
     );
     let missing = dir.join("missing.exr");
     refused(

@@ -8,8 +8,7 @@
 use anyhow::{Context, Result, bail};
 use lowdisc::catalog::SamplerName;
 use lowdisc_image::RgbImage;
-use lowdisc_render::film::FilmParams;
-use lowdisc_render::scene::Scene;
+use lowdisc_render::view::{View, ViewSpec};
 use lowdisc_split::RenderPart;
 
 use crate::comparison::fill_statistics;
@@ -22,7 +21,7 @@ use crate::reference::reference;
 use crate::results::{
     ConvPoint, Images, Results, RunResult, SamplerResult, SweepPoint, fill_ratios,
 };
-use crate::run::Outcome;
+use crate::run::{Outcome, Subject};
 use crate::stats::{MeanSd, log_log_slope};
 use crate::sweep::{THRESHOLDS, pixel_discrepancy};
 
@@ -71,31 +70,29 @@ pub trait UnitSource {
 }
 
 /// What renders are measured with: the scene's metrics at the plan's
-/// resolution and its film (whose settings turn merged sums into images).
+/// resolution and its view (whose film turns merged sums into images).
 pub struct Measures {
     /// The masked, blurred and FLIP metrics.
     pub evaluator: Evaluator,
-    /// The scene's film, at the plan's resolution.
-    pub film: FilmParams,
+    /// The scene's view.
+    pub view: ViewSpec,
 }
 
 impl Measures {
-    /// The measures of the experiment `plan` on `scene` (loaded at the
-    /// plan's resolution).
-    pub fn new(plan: &Plan, scene: &Scene) -> Result<Measures> {
+    /// The measures of the experiment `plan` on `subject`, at the plan's
+    /// resolution.
+    pub fn new(plan: &Plan, subject: &Subject) -> Result<Measures> {
         let c = &plan.config;
+        let view = subject.view_at(c.resolution)?;
         Ok(Measures {
-            evaluator: Evaluator::new(scene, c.emitter_border, c.blur_sigma)?,
-            film: scene.film().params.clone(),
+            evaluator: Evaluator::new(&subject.scene, &view, c.emitter_border, c.blur_sigma)?,
+            view: subject.view.clone(),
         })
     }
 
-    /// The film at `resolution`.
-    pub(crate) fn film_at(&self, resolution: [u32; 2]) -> FilmParams {
-        FilmParams {
-            resolution,
-            ..self.film.clone()
-        }
+    /// The view at `resolution`.
+    pub(crate) fn view_at(&self, resolution: [u32; 2]) -> Result<View> {
+        Ok(View::new(&self.view, resolution)?)
     }
 }
 
@@ -139,15 +136,15 @@ impl<'a> Cursor<'a> {
 }
 
 /// The image of a render cut into `cut`, whose pieces are the next units
-/// of `cursor` (the unit of each piece is `work(piece)`), as a film of
-/// `film` (spectral or not), and the sum of the pieces' render times.
+/// of `cursor` (the unit of each piece is `work(piece)`), as the film of
+/// `view` (spectral or not), and the sum of the pieces' render times.
 pub(crate) fn join_cut(
     cursor: &mut Cursor,
     source: &mut dyn UnitSource,
     stage: &Stage,
     cut: Cut,
     work: &dyn Fn(Piece) -> Work,
-    film: &FilmParams,
+    view: &View,
     spectral: bool,
 ) -> Result<(RgbImage, f64)> {
     let mut joiner = Joiner::new();
@@ -159,7 +156,7 @@ pub(crate) fn join_cut(
         let name = format!("unit {} ({})", unit.index, unit.work.describe());
         joiner.push(piece, name, out.into_sums(unit)?)?;
     }
-    Ok((joiner.finish(film, spectral)?, time_s))
+    Ok((joiner.finish(view, spectral)?, time_s))
 }
 
 /// The numbers and images of the experiment of `plan`, from the renders
@@ -246,7 +243,7 @@ pub fn assemble(
         let stage = Stage::begin(observer, &title, per_series);
         let mut series = Vec::new();
         let mut spp = 1;
-        let film = measures.film_at(config.conv_res);
+        let view = measures.view_at(config.conv_res)?;
         while spp <= config.conv_max {
             let work = |piece| Work::Convergence {
                 sampler: name,
@@ -260,7 +257,7 @@ pub fn assemble(
                 &stage,
                 cut,
                 &work,
-                &film,
+                &view,
                 config.spectral,
             )?;
             series.push(ConvPoint {

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use lowdisc::catalog::SamplerName;
 use lowdisc_render::preset::ScenePreset;
+use lowdisc_render::settings::ranges;
 
 /// The seed of the reference render.
 pub const REF_SEED: u64 = 0x0005_EED0_F2EF;
@@ -13,8 +14,6 @@ pub const REF_SEED: u64 = 0x0005_EED0_F2EF;
 pub const REF_SAMPLER: SamplerName = SamplerName::SobolOwen;
 /// The samplers compared by default.
 pub const DEFAULT_SAMPLERS: &str = "independent,stratified,halton,sobol,paper,paper-repro,sobol-xor,padded-sobol,sobol-fast-owen,zsobol";
-/// The largest image side accepted.
-pub const MAX_SIDE: u32 = 16_384;
 /// The least default unit budget of [`ExperimentConfig::unit_budget`]: 2^23
 /// camera samples (about 10 s at the 1.26 s per million samples the README
 /// measured for the default experiment on its idle 2-core machine), so that
@@ -106,10 +105,8 @@ impl ExperimentConfig {
         if self.samplers.is_empty() {
             bail!("--samplers needs at least one sampler name");
         }
-        for (flag, [w, h]) in [("--res", self.resolution), ("--conv-res", self.conv_res)] {
-            if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
-                bail!("{flag} {w}x{h} is out of range: each side must be 1 to {MAX_SIDE} pixels");
-            }
+        for (flag, res) in [("--res", self.resolution), ("--conv-res", self.conv_res)] {
+            named(flag, ranges::resolution(res))?;
         }
         let (spp, runs, ref_spp, conv_max) = (self.spp, self.runs, self.ref_spp, self.conv_max);
         if spp == 0 || spp > 1 << 16 {
@@ -128,19 +125,10 @@ impl ExperimentConfig {
         if conv_ref_spp == 0 || conv_ref_spp > 1 << 20 {
             bail!("--conv-ref-spp must be between 1 and 1048576, got {conv_ref_spp}");
         }
-        if !(0.0..=1.0).contains(&self.threshold) {
-            bail!("--threshold must lie in [0, 1], got {}", self.threshold);
-        }
-        if self.max_depth > lowdisc_render::integrator::MAX_DEPTH_LIMIT {
-            bail!("--maxdepth is too large: {}", self.max_depth);
-        }
+        named("--threshold", ranges::threshold(self.threshold))?;
+        named("--maxdepth", ranges::max_depth(self.max_depth))?;
         if let Some(t) = self.threads {
-            if t == 0 || t > lowdisc_render::render::MAX_THREADS {
-                bail!(
-                    "--threads must be between 1 and {}, got {t}",
-                    lowdisc_render::render::MAX_THREADS
-                );
-            }
+            named("--threads", ranges::threads(t))?;
         }
         if let Some(n) = self.unit_samples {
             if n < MIN_UNIT_SAMPLES {
@@ -165,4 +153,9 @@ impl ExperimentConfig {
         }
         Ok(())
     }
+}
+
+/// `check`'s problem, if any, as an error naming `flag`.
+fn named(flag: &str, check: ranges::Check) -> Result<()> {
+    check.map_err(|p| anyhow::anyhow!("{flag}: {p}"))
 }

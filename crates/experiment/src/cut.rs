@@ -19,8 +19,9 @@
 
 use anyhow::{Context, Result, bail};
 use lowdisc_image::RgbImage;
-use lowdisc_render::film::{FilmParams, PixelBounds};
+use lowdisc_render::film::PixelBounds;
 use lowdisc_render::render::{SampleRange, image_of_sums};
+use lowdisc_render::view::View;
 use lowdisc_split::{NamedPart, RenderPart, merge};
 
 use crate::progress::samples;
@@ -182,10 +183,10 @@ impl Joiner {
         Ok(())
     }
 
-    /// The image of the whole render, a film of `params` (spectral or
+    /// The image of the whole render, the film of `view` (spectral or
     /// not); an error unless the pieces make every pixel of the film with
     /// every sample.
-    pub fn finish(self, params: &FilmParams, spectral: bool) -> Result<RgbImage> {
+    pub fn finish(self, view: &View, spectral: bool) -> Result<RgbImage> {
         if !self.band.is_empty() {
             bail!("the last band of the render lacks sample ranges");
         }
@@ -201,7 +202,7 @@ impl Joiner {
                 i.samples
             );
         }
-        image_of_sums(params, whole.info.window, spectral, &whole.sums)
+        image_of_sums(view, whole.info.window, spectral, &whole.sums)
             .context("cannot make the image of the merged pieces")
     }
 }

@@ -10,10 +10,9 @@ use std::time::Instant;
 
 use anyhow::Result;
 use lowdisc_render::render::{NoProgress, render};
-use lowdisc_render::scene::Scene;
 
 use crate::config::{ExperimentConfig, REF_SAMPLER};
-use crate::run::options;
+use crate::run::{Subject, options};
 
 /// The estimated work and time of a run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,12 +31,15 @@ pub struct Estimate {
 /// stage's own (350-770 ksamples/s); at 4 spp it costs about half a second.
 pub const CALIBRATION_SPP: u32 = 4;
 
-/// Renders `scene` once with [`CALIBRATION_SPP`] samples per pixel and
-/// estimates the time of `samples` samples from its speed.
-pub fn calibrate(config: &ExperimentConfig, scene: &Scene, samples: u64) -> Result<Estimate> {
+/// Renders `subject` once at the experiment's resolution with
+/// [`CALIBRATION_SPP`] samples per pixel and estimates the time of
+/// `samples` samples from its speed.
+pub fn calibrate(config: &ExperimentConfig, subject: &Subject, samples: u64) -> Result<Estimate> {
+    let view = subject.view_at(config.resolution)?;
     let start = Instant::now();
     let out = render(
-        scene,
+        &subject.scene,
+        &view,
         &options(config, REF_SAMPLER, 0, CALIBRATION_SPP),
         &NoProgress,
     )?;

@@ -83,8 +83,8 @@ pub fn merge(dir: &Path, observer: &dyn Progress) -> Result<Outcome> {
             list(&missing, 12)
         );
     }
-    let (_, scene) = planned_scene(&plan, None, observer)?;
-    let measures = Measures::new(&plan.plan, &scene)?;
+    let (_, subject) = planned_scene(&plan, None, observer)?;
+    let measures = Measures::new(&plan.plan, &subject)?;
     let mut source = FromFiles {
         plan: &plan,
         store: &store,

@@ -26,6 +26,7 @@ use lowdisc_image::{
 };
 use lowdisc_render::first_hit::{DEFAULT_COVERAGE_GRID, emitter_coverage};
 use lowdisc_render::scene::Scene;
+use lowdisc_render::view::View;
 use serde::Serialize;
 
 pub use lowdisc_image::DEFAULT_EMITTER_BORDER;
@@ -50,10 +51,10 @@ pub struct Evaluator {
 }
 
 impl Evaluator {
-    /// The evaluator of `scene` (at its current resolution): its emitter
-    /// mask with `border` pixels, and a blur of `sigma` pixels.
-    pub fn new(scene: &Scene, border: u32, sigma: f64) -> Result<Evaluator> {
-        let coverage = emitter_coverage(scene, DEFAULT_COVERAGE_GRID)?;
+    /// The evaluator of `scene` seen through `view`: its emitter mask with
+    /// `border` pixels, and a blur of `sigma` pixels.
+    pub fn new(scene: &Scene, view: &View, border: u32, sigma: f64) -> Result<Evaluator> {
+        let coverage = emitter_coverage(scene, view, DEFAULT_COVERAGE_GRID)?;
         let (w, h) = (coverage.width, coverage.height);
         let mut mask = PixelMask::excluding(w, h, &coverage.any(), border)?;
         if mask.kept() == 0 {
@@ -94,15 +95,17 @@ mod tests {
 
     #[test]
     fn cornell_mask_drops_the_light_and_its_border_only() {
-        let scene = cornell_box([64, 64]).unwrap();
-        let e = Evaluator::new(&scene, 3, 1.0).unwrap();
+        let (scene, view) = cornell_box([64, 64]).unwrap();
+        let e = Evaluator::new(&scene, &view, 3, 1.0).unwrap();
         let kept = e.kept_fraction();
         assert!(kept > 0.9 && kept < 1.0, "{kept}");
-        let wider = Evaluator::new(&scene, 5, 1.0).unwrap().kept_fraction();
+        let wider = Evaluator::new(&scene, &view, 5, 1.0)
+            .unwrap()
+            .kept_fraction();
         assert!(wider < kept);
         // The light is at the top centre: the bottom row is kept.
         assert!((0..64).all(|x| e.mask().keeps(x, 63)));
-        let centre = scene
+        let centre = view
             .camera()
             .raster_from_world(lowdisc_render::math::Point3::new(278.0, 548.8, 279.5))
             .unwrap();
@@ -112,8 +115,8 @@ mod tests {
 
     #[test]
     fn a_render_equal_to_the_reference_measures_zero() {
-        let scene = cornell_box([16, 16]).unwrap();
-        let e = Evaluator::new(&scene, 3, 1.0).unwrap();
+        let (scene, view) = cornell_box([16, 16]).unwrap();
+        let e = Evaluator::new(&scene, &view, 3, 1.0).unwrap();
         let img =
             RgbImage::from_fn(16, 16, |x, y| [x as f32 / 16.0, y as f32 / 16.0, 0.2]).unwrap();
         let q = e.measure(&img, &img).unwrap();

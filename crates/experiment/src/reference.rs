@@ -73,7 +73,7 @@ pub(crate) fn reference(
         &stage,
         reference_cut(config, target),
         &|piece| Work::Reference { target, piece },
-        &measures.film_at(resolution),
+        &measures.view_at(resolution)?,
         config.spectral,
     )?;
     stage.end();

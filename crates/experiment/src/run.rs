@@ -14,6 +14,7 @@ use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::RenderOptions;
 use lowdisc_render::scene::Scene;
+use lowdisc_render::view::{View, ViewSpec};
 
 use crate::assemble::{Measures, report};
 use crate::config::ExperimentConfig;
@@ -27,12 +28,29 @@ use crate::scene;
 use crate::stats::{FNV_OFFSET, fnv1a};
 use crate::units::InProcess;
 
+/// What the experiment renders: its scene and the scene's view, which
+/// every render builds at its own resolution.
+#[derive(Clone, Debug)]
+pub struct Subject {
+    /// Geometry, materials, lights.
+    pub scene: Scene,
+    /// Camera, film and filter.
+    pub view: ViewSpec,
+}
+
+impl Subject {
+    /// The view built at `resolution`.
+    pub fn view_at(&self, resolution: [u32; 2]) -> Result<View> {
+        Ok(View::new(&self.view, resolution)?)
+    }
+}
+
 /// The scene and the hash of its content: the built-in scene's id or the
 /// scene file's bytes (not the files it includes), and the environment
 /// map's bytes. `--envmap` replaces the built-in sky, or every image-based
 /// `infinite` light of a scene file (pbrt-v4 scenes often ship without
 /// their environment map).
-pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result<(Scene, u64)> {
+pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result<(Subject, u64)> {
     let mut hash = FNV_OFFSET;
     let read = |p: &std::path::Path| {
         std::fs::read(p).with_context(|| format!("cannot read `{}`", p.display()))
@@ -44,11 +62,11 @@ pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result
     if let Some((_, bytes)) = &envmap_bytes {
         hash = fnv1a(hash, bytes);
     }
-    let scene = match &config.scene {
+    let (scene, view) = match &config.scene {
         None if config.preset.is_some() => {
             let preset = config.preset.context("no preset")?;
             hash = fnv1a(hash, preset.id().as_bytes());
-            preset.scene(config.resolution)?
+            preset.scene()?
         }
         None => {
             hash = fnv1a(hash, scene::SCENE_ID.as_bytes());
@@ -73,12 +91,10 @@ pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result
             for w in &loaded.warnings {
                 observer.note(w);
             }
-            let mut s = loaded.scene;
-            s.set_resolution(config.resolution)?;
-            s
+            (loaded.scene, loaded.view)
         }
     };
-    Ok((scene, hash))
+    Ok((Subject { scene, view }, hash))
 }
 
 /// The render options of one render of the experiment.
@@ -149,7 +165,7 @@ impl Outcome {
 pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<Outcome> {
     config.validate()?;
     let start = Instant::now();
-    let (mut scene, scene_hash) = load(config, observer)?;
+    let (subject, scene_hash) = load(config, observer)?;
     std::fs::create_dir_all(&config.out)
         .with_context(|| format!("cannot create `{}`", config.out.display()))?;
     let plan = Plan::new(
@@ -157,11 +173,11 @@ pub fn run(config: &ExperimentConfig, observer: &dyn Progress) -> Result<Outcome
         scene_hash,
         cached_references(config, scene_hash),
     );
-    observer.estimate(&calibrate(config, &scene, plan.samples())?);
-    let measures = Measures::new(&plan, &scene)?;
+    observer.estimate(&calibrate(config, &subject, plan.samples())?);
+    let measures = Measures::new(&plan, &subject)?;
     let mut source = InProcess {
         config,
-        scene: &mut scene,
+        subject: &subject,
         scene_hash,
     };
     let wall = || start.elapsed().as_secs_f64();

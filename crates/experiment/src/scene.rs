@@ -34,8 +34,9 @@ use lowdisc_render::filter::Filter;
 use lowdisc_render::geometry::{Disk, MeshData, Sphere, TriangleMesh};
 use lowdisc_render::light::{EnvLayout, EnvLookup, ImageInfiniteLight, Light};
 use lowdisc_render::math::{Point3, Transform, Vec3};
-use lowdisc_render::scene::{CameraSpec, FilmSettings, Scene, SceneBuilder};
+use lowdisc_render::scene::{Scene, SceneBuilder};
 use lowdisc_render::spectrum::Rgb;
+use lowdisc_render::view::{CameraSpec, ViewSpec};
 
 /// A name and version of the built-in scene, part of the reference cache key.
 pub const SCENE_ID: &str = "builtin-showroom-v2";
@@ -119,9 +120,9 @@ fn sphere(b: &mut SceneBuilder, center: [f32; 3], r: f32, material: u32) -> Resu
     Ok(())
 }
 
-/// Builds the built-in scene at `resolution`, lit by `sky` (a lat-long or
-/// equal-area image; `None` uses [`procedural_sky`]).
-pub fn showroom(resolution: [u32; 2], sky: Option<&RgbImage>) -> Result<Scene> {
+/// Builds the built-in scene, lit by `sky` (a lat-long or equal-area image;
+/// `None` uses [`procedural_sky`]), and its view on a `resolution` film.
+pub fn showroom(resolution: [u32; 2], sky: Option<&RgbImage>) -> Result<(Scene, ViewSpec)> {
     let mut b = SceneBuilder::new();
     let ground = b.add_material(Material::diffuse(Rgb::splat(0.4)));
     let gold = b.add_material(Material::Conductor {
@@ -192,16 +193,15 @@ pub fn showroom(resolution: [u32; 2], sky: Option<&RgbImage>) -> Result<Scene> {
         Vec3::new(0.0, 0.0, 1.0),
     )
     .context("singular camera")?;
-    b.set_camera(CameraSpec {
+    let camera = CameraSpec {
         world_from_camera: look.inverse(),
         params: PerspectiveParams {
             fov: 32.0,
             ..PerspectiveParams::default()
         },
-    });
+    };
     let filter = Filter::box_filter([0.5, 0.5]).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut film = FilmSettings::new(resolution, filter);
-    film.params.max_component_value = MAX_COMPONENT_VALUE;
-    b.set_film(film);
-    Ok(b.build()?)
+    let mut view = ViewSpec::new(camera, resolution, filter);
+    view.film.max_component_value = MAX_COMPONENT_VALUE;
+    Ok((b.build()?, view))
 }

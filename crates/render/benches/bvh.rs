@@ -80,7 +80,7 @@ fn inner_rays(accel: &Accel, n: usize) -> Vec<Ray> {
 }
 
 fn bench_cornell(c: &mut Criterion) {
-    let scene = lowdisc_render::cornell::cornell_box([64, 64]).expect("built-in scene");
+    let (scene, _) = lowdisc_render::cornell::cornell_box([64, 64]).expect("built-in scene");
     let accel = Accel::build(scene.shapes().clone());
     let rs = inner_rays(&accel, 100_000);
     let mut g = c.benchmark_group("bvh");

@@ -14,6 +14,7 @@ use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{Progress, RenderOptions, render};
 use lowdisc_render::scene::Scene;
+use lowdisc_render::view::View;
 use std::hint::black_box;
 
 fn options() -> RenderOptions {
@@ -22,11 +23,11 @@ fn options() -> RenderOptions {
     opts
 }
 
-/// Benchmarks one whole render of `scene`, throughput in rays.
-fn bench_scene(c: &mut Criterion, name: &str, scene: &Scene) {
+/// Benchmarks one whole render of `scene` through `view`, throughput in rays.
+fn bench_scene(c: &mut Criterion, name: &str, scene: &Scene, view: &View) {
     let opts = options();
     let quiet = |_: Progress| {};
-    let rays = match render(scene, &opts, &quiet) {
+    let rays = match render(scene, view, &opts, &quiet) {
         Ok(out) => out.stats.rays,
         Err(e) => {
             println!("skipped {name}: {e}");
@@ -37,14 +38,14 @@ fn bench_scene(c: &mut Criterion, name: &str, scene: &Scene) {
     group.sample_size(10);
     group.throughput(Throughput::Elements(rays));
     group.bench_function(name, |b| {
-        b.iter(|| black_box(render(scene, &opts, &quiet).map(|o| o.stats.rays)))
+        b.iter(|| black_box(render(scene, view, &opts, &quiet).map(|o| o.stats.rays)))
     });
     group.finish();
 }
 
 fn cornell(c: &mut Criterion) {
     match cornell_box([64, 64]) {
-        Ok(scene) => bench_scene(c, "cornell-64x64-4spp", &scene),
+        Ok((scene, view)) => bench_scene(c, "cornell-64x64-4spp", &scene, &view),
         Err(e) => println!("skipped cornell: {e}"),
     }
 }
@@ -59,18 +60,11 @@ fn bmw(c: &mut Criterion) {
     let options = LoadOptions {
         envmap_override: Some(dir.join("envmaps/pbrt-v4-ganesha-sky-equiarea.exr")),
     };
-    let mut scene = match load_pbrt_scene(&file, &options) {
-        Ok(loaded) => loaded.scene,
-        Err(e) => {
-            println!("skipped bmw-m6: {e}");
-            return;
-        }
-    };
-    if let Err(e) = scene.set_resolution([128, 72]) {
-        println!("skipped bmw-m6: {e}");
-        return;
+    let loaded = load_pbrt_scene(&file, &options);
+    match loaded.and_then(|l| Ok((View::new(&l.view, [128, 72])?, l.scene))) {
+        Ok((view, scene)) => bench_scene(c, "bmw-m6-128x72-4spp", &scene, &view),
+        Err(e) => println!("skipped bmw-m6: {e}"),
     }
-    bench_scene(c, "bmw-m6-128x72-4spp", &scene);
 }
 
 criterion_group!(benches, cornell, bmw);

@@ -37,8 +37,9 @@ use crate::error::RenderError;
 use crate::filter::Filter;
 use crate::geometry::{MeshData, TriangleMesh};
 use crate::math::{Point3, Transform, Vec3};
-use crate::scene::{CameraSpec, Emission, FilmSettings, Scene, SceneBuilder};
+use crate::scene::{Emission, Scene, SceneBuilder};
 use crate::spectrum::Rgb;
+use crate::view::{CameraSpec, View, ViewSpec};
 
 /// Multiplies the light's published relative emission.
 pub const CORNELL_LIGHT_SCALE: f32 = 1.0;
@@ -212,9 +213,26 @@ pub fn cornell_camera_with_lens(
     })
 }
 
-/// Builds the Cornell box at `resolution` with a box pixel filter of
-/// radius 0.5 (each sample lands in its own pixel).
-pub fn cornell_box(resolution: [u32; 2]) -> Result<Scene, RenderError> {
+/// The resolution the Cornell box is rendered at unless the settings say
+/// otherwise.
+pub const CORNELL_RESOLUTION: [u32; 2] = [512, 512];
+
+/// The Cornell box and its view: the published camera on a
+/// [`CORNELL_RESOLUTION`] film with a box pixel filter of radius 0.5 (each
+/// sample lands in its own pixel).
+pub fn cornell_scene() -> Result<(Scene, ViewSpec), RenderError> {
+    Ok((cornell_geometry()?, cornell_view(cornell_camera()?)?))
+}
+
+/// The Cornell box's view through `camera` on a [`CORNELL_RESOLUTION`] film.
+pub fn cornell_view(camera: CameraSpec) -> Result<ViewSpec, RenderError> {
+    let filter =
+        Filter::box_filter([0.5, 0.5]).map_err(|e| RenderError::InvalidScene(e.to_string()))?;
+    Ok(ViewSpec::new(camera, CORNELL_RESOLUTION, filter))
+}
+
+/// The Cornell box and its view built at `resolution`.
+pub fn cornell_box(resolution: [u32; 2]) -> Result<(Scene, View), RenderError> {
     cornell_box_with_camera(resolution, cornell_camera()?)
 }
 
@@ -222,7 +240,13 @@ pub fn cornell_box(resolution: [u32; 2]) -> Result<Scene, RenderError> {
 pub fn cornell_box_with_camera(
     resolution: [u32; 2],
     camera: CameraSpec,
-) -> Result<Scene, RenderError> {
+) -> Result<(Scene, View), RenderError> {
+    let view = View::new(&cornell_view(camera)?, resolution)?;
+    Ok((cornell_geometry()?, view))
+}
+
+/// The box's geometry, materials and light.
+fn cornell_geometry() -> Result<Scene, RenderError> {
     let mut b = SceneBuilder::new();
     let white = b.add_material(Material::diffuse(Rgb::from_array(CORNELL_WHITE)));
     let red = b.add_material(Material::diffuse(Rgb::from_array(CORNELL_RED)));
@@ -240,9 +264,5 @@ pub fn cornell_box_with_camera(
         two_sided: false,
     };
     b.add_mesh(quads(&[LIGHT])?, black, Some(emission));
-    b.set_camera(camera);
-    let filter =
-        Filter::box_filter([0.5, 0.5]).map_err(|e| RenderError::InvalidScene(e.to_string()))?;
-    b.set_film(FilmSettings::new(resolution, filter));
     b.build()
 }

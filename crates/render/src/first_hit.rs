@@ -18,9 +18,9 @@
 
 use rayon::prelude::*;
 
-use crate::film::Film;
 use crate::render::RenderError;
 use crate::scene::Scene;
+use crate::view::View;
 
 /// The default sub-pixel raster: 4 x 4 rays per pixel.
 pub const DEFAULT_COVERAGE_GRID: u32 = 4;
@@ -60,19 +60,22 @@ fn sees_emitter(scene: &Scene, ray: &crate::math::Ray) -> bool {
     }
 }
 
-/// The emitter coverage of every pixel of `scene`'s image with a `grid x
-/// grid` raster of rays per pixel; an error for `grid` outside
-/// `1..=MAX_COVERAGE_GRID` or an invalid film.
-pub fn emitter_coverage(scene: &Scene, grid: u32) -> Result<EmitterCoverage, RenderError> {
+/// The emitter coverage of every pixel of `scene`'s image through `view`
+/// with a `grid x grid` raster of rays per pixel; an error for `grid`
+/// outside `1..=MAX_COVERAGE_GRID`.
+pub fn emitter_coverage(
+    scene: &Scene,
+    view: &View,
+    grid: u32,
+) -> Result<EmitterCoverage, RenderError> {
     if grid == 0 || grid > MAX_COVERAGE_GRID {
         return Err(RenderError::InvalidOptions(format!(
             "emitter coverage grid must be 1 to {MAX_COVERAGE_GRID}, got {grid}"
         )));
     }
-    let film = Film::new(&scene.film().params).map_err(RenderError::Film)?;
-    let bounds = film.pixel_bounds();
+    let bounds = view.pixel_bounds();
     let (width, height) = (bounds.width(), bounds.height());
-    let camera = scene.camera();
+    let camera = view.camera();
     let g = grid as f32;
     let per_pixel = (grid * grid) as f32;
     let rows: Vec<Vec<f32>> = (0..height)
@@ -111,8 +114,8 @@ mod tests {
 
     #[test]
     fn cornell_light_is_seen_only_at_the_top_centre() {
-        let scene = cornell_box([32, 32]).unwrap();
-        let c = emitter_coverage(&scene, 4).unwrap();
+        let (scene, view) = cornell_box([32, 32]).unwrap();
+        let c = emitter_coverage(&scene, &view, 4).unwrap();
         assert_eq!((c.width, c.height, c.fraction.len()), (32, 32, 1024));
         let lit: Vec<(usize, usize)> = (0..1024)
             .filter(|&i| c.fraction[i] > 0.0)
@@ -134,7 +137,7 @@ mod tests {
     fn coverage_converges_to_the_light_s_projected_area() {
         // The light is an unoccluded planar quad: its image is the
         // quadrilateral of its projected corners (shoelace area, in pixels).
-        let scene = cornell_box([64, 64]).unwrap();
+        let (scene, view) = cornell_box([64, 64]).unwrap();
         let corners = [
             [343.0, 548.8, 227.0],
             [343.0, 548.8, 332.0],
@@ -142,8 +145,7 @@ mod tests {
             [213.0, 548.8, 227.0],
         ]
         .map(|p| {
-            scene
-                .camera()
+            view.camera()
                 .raster_from_world(Point3::from_array(p))
                 .unwrap()
         });
@@ -157,7 +159,7 @@ mod tests {
             / 2.0;
         assert!(exact > 10.0, "{exact}");
         let area = |g| {
-            emitter_coverage(&scene, g)
+            emitter_coverage(&scene, &view, g)
                 .unwrap()
                 .fraction
                 .iter()
@@ -170,8 +172,8 @@ mod tests {
 
     #[test]
     fn grid_out_of_range_is_an_error() {
-        let scene = cornell_box([4, 4]).unwrap();
-        assert!(emitter_coverage(&scene, 0).is_err());
-        assert!(emitter_coverage(&scene, MAX_COVERAGE_GRID + 1).is_err());
+        let (scene, view) = cornell_box([4, 4]).unwrap();
+        assert!(emitter_coverage(&scene, &view, 0).is_err());
+        assert!(emitter_coverage(&scene, &view, MAX_COVERAGE_GRID + 1).is_err());
     }
 }

@@ -2,17 +2,23 @@
 //! pbrt-v4 scene loading.
 //!
 //! **Entry points.** [`pbrt::load_pbrt_scene`] (a scene file) or
-//! [`cornell::cornell_box`] (the built-in scene) give a [`scene::Scene`];
-//! [`render::render`] renders it with [`render::RenderOptions`] (which hold the
-//! sampler's [`lowdisc::catalog::SamplerConfig`]) and returns the film, the
-//! image and counters. Every failure is an [`error::RenderError`].
+//! [`cornell::cornell_scene`] (the built-in scene) give a [`scene::Scene`]
+//! (geometry, materials, lights) and a [`view::ViewSpec`] (camera, film,
+//! filter) with the settings the description asks for;
+//! [`settings::Settings::resolve`] combines those with the caller's own
+//! into one validated [`settings::Settings`]; [`view::View::new`] builds the
+//! view at its resolution, and [`render::render`] renders the scene through
+//! the view with [`render::RenderOptions`] (which hold the sampler's
+//! [`lowdisc::catalog::SamplerConfig`]), returning the film, the image and
+//! counters. Every failure is an [`error::RenderError`].
 //!
 //! **Modules**, from the scene description down to the numbers:
 //!
 //! | layer | modules |
 //! |---|---|
 //! | scenes | [`pbrt`] (pbrt-v4 loader: graphics state, shapes, materials, textures, lights, options), [`cornell`] (built-in scene), [`scene`] (builder and the renderable scene) |
-//! | rendering | [`render`] (options, tiles, threads, progress; one camera sample), [`integrator`] (path tracer, sampler-dimension layout), [`camera`] (perspective camera), [`film`] (pixel sums, tiles, output), [`filter`] (pixel filters and their sampling) |
+//! | settings and view | [`settings`] (every render setting: layers, defaults, ranges, resolution), [`view`] (camera, film and filter, built once per render) |
+//! | rendering | [`render`] (tiles, threads, progress; one camera sample), [`integrator`] (path tracer, sampler-dimension layout), [`camera`] (perspective camera), [`film`] (pixel sums, tiles, output), [`filter`] (pixel filters and their sampling) |
 //! | appearance | [`bsdf`] (BxDFs, materials, `mix`), [`texture`] (one generic texture, image maps, registry), [`light`] (point, spot, distant, area, infinite and image lights; light selection), [`spectrum`] (the `Colour` trait: RGB, or four sampled wavelengths with uplift, named spectra and the film's sensor) |
 //! | geometry | [`geometry`] (triangles, spheres, disks, bilinear patches, Loop subdivision), [`accel`] (shapes plus BVH, full hits), [`bvh`] (binned-SAH build, traversal), [`mesh`] (PLY files) |
 //! | foundations | [`math`] (vectors, rays, boxes, transforms, frames), [`sampling`] (tabulated 1-D/2-D distributions), [`error`] (the crate's errors) |
@@ -43,8 +49,10 @@ pub mod preset;
 pub mod render;
 pub mod sampling;
 pub mod scene;
+pub mod settings;
 pub mod spectrum;
 pub mod texture;
+pub mod view;
 
 pub use accel::Accel;
 pub use error::{Error, RenderError};

@@ -18,9 +18,10 @@
 //! sample (the first BSDF vertex's dimensions), the case where joint
 //! stratification of pixel and light sample pays most.
 
-use crate::cornell::{cornell_box_with_camera, cornell_camera, cornell_camera_with_lens};
+use crate::cornell::{cornell_camera, cornell_camera_with_lens, cornell_scene, cornell_view};
 use crate::render::RenderError;
 use crate::scene::Scene;
+use crate::view::ViewSpec;
 
 /// Maximum path depth of the `gi` preset.
 pub const GI_MAX_DEPTH: u32 = 5;
@@ -84,13 +85,13 @@ impl ScenePreset {
         }
     }
 
-    /// The scene at `resolution`.
-    pub fn scene(self, resolution: [u32; 2]) -> Result<Scene, RenderError> {
+    /// The scene and its view.
+    pub fn scene(self) -> Result<(Scene, ViewSpec), RenderError> {
         let camera = match self {
             ScenePreset::Direct => cornell_camera()?,
             ScenePreset::Gi => cornell_camera_with_lens(GI_LENS_RADIUS, GI_FOCAL_DISTANCE)?,
         };
-        cornell_box_with_camera(resolution, camera)
+        Ok((cornell_scene()?.0, cornell_view(camera)?))
     }
 }
 
@@ -98,8 +99,15 @@ impl ScenePreset {
 mod tests {
     use super::*;
     use crate::integrator::PathIntegrator;
-    use crate::render::{NoProgress, RenderOptions, render};
+    use crate::render::{NoProgress, RenderOptions, RenderOutput, render};
+    use crate::view::View;
     use lowdisc::catalog::SamplerName;
+
+    fn render_preset(p: ScenePreset, res: [u32; 2], opts: &RenderOptions) -> RenderOutput {
+        let (scene, spec) = p.scene().unwrap();
+        let view = View::new(&spec, res).unwrap();
+        render(&scene, &view, opts, &NoProgress).unwrap()
+    }
 
     fn options(preset: ScenePreset, seed: u64) -> RenderOptions {
         RenderOptions {
@@ -129,19 +137,14 @@ mod tests {
     fn gi_adds_indirect_light_and_direct_is_the_plain_box() {
         let res = [24, 24];
         let mean = |p: ScenePreset| {
-            let out = render(&p.scene(res).unwrap(), &options(p, 1), &NoProgress).unwrap();
+            let out = render_preset(p, res, &options(p, 1));
             out.mean().iter().sum::<f64>()
         };
         let (direct, gi) = (mean(ScenePreset::Direct), mean(ScenePreset::Gi));
         assert!(gi > 1.3 * direct, "gi {gi}, direct {direct}");
-        let plain = crate::cornell::cornell_box(res).unwrap();
-        let a = render(&plain, &options(ScenePreset::Direct, 1), &NoProgress).unwrap();
-        let b = render(
-            &ScenePreset::Direct.scene(res).unwrap(),
-            &options(ScenePreset::Direct, 1),
-            &NoProgress,
-        )
-        .unwrap();
+        let (plain, view) = crate::cornell::cornell_box(res).unwrap();
+        let a = render(&plain, &view, &options(ScenePreset::Direct, 1), &NoProgress).unwrap();
+        let b = render_preset(ScenePreset::Direct, res, &options(ScenePreset::Direct, 1));
         assert_eq!(a.image.pixels(), b.image.pixels());
     }
 
@@ -151,13 +154,9 @@ mod tests {
     fn gi_preset_has_depth_of_field() {
         let res = [16, 16];
         let opts = options(ScenePreset::Gi, 2);
-        let lens = render(&ScenePreset::Gi.scene(res).unwrap(), &opts, &NoProgress).unwrap();
-        let pinhole = render(
-            &crate::cornell::cornell_box(res).unwrap(),
-            &opts,
-            &NoProgress,
-        )
-        .unwrap();
+        let lens = render_preset(ScenePreset::Gi, res, &opts);
+        let (scene, view) = crate::cornell::cornell_box(res).unwrap();
+        let pinhole = render(&scene, &view, &opts, &NoProgress).unwrap();
         assert_ne!(lens.image.pixels(), pinhole.image.pixels());
     }
 }

@@ -267,13 +267,13 @@ fn images_are_bit_identical_with_every_lane_set() {
     // The widest lanes this CPU has (AVX2 on x86-64-v3) against the
     // portable ones: the same image, bit for bit. (On a CPU without AVX2
     // both are portable and the test only checks determinism.)
-    let scene = cornell_box([48, 32]).unwrap();
+    let (scene, view) = cornell_box([48, 32]).unwrap();
     let opts = RenderOptions {
         threads: Some(2),
         ..RenderOptions::new(SamplerName::ZSobol, 3, 8)
     };
     let bits = |scene| {
-        let out = render(scene, &opts, &NoProgress).unwrap();
+        let out = render(scene, &view, &opts, &NoProgress).unwrap();
         (out.image.pixels().iter())
             .flat_map(|c| c.map(f32::to_bits))
             .collect::<Vec<u32>>()

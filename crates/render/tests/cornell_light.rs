@@ -104,7 +104,7 @@ fn worst(image: &[f64], cov: &[f64]) -> f64 {
 fn directly_seen_light_covers_each_pixel_exactly() {
     // Not square, so the field of view's axis matters too.
     let (w, h) = (96u32, 64u32);
-    let scene = cornell_box([w, h]).unwrap();
+    let (scene, view) = cornell_box([w, h]).unwrap();
     let opts = RenderOptions {
         integrator: PathIntegrator {
             max_depth: 0,
@@ -112,7 +112,7 @@ fn directly_seen_light_covers_each_pixel_exactly() {
         },
         ..RenderOptions::new(SamplerName::SobolOwen, 3, 1024)
     };
-    let out = render(&scene, &opts, &NoProgress).unwrap();
+    let out = render(&scene, &view, &opts, &NoProgress).unwrap();
     let cov = coverage(w, h, 0.0);
     let grown = coverage(w, h, 1.0);
     let partial = cov.iter().filter(|&&c| c > 0.0 && c < 1.0).count();

@@ -15,9 +15,10 @@ use lowdisc_render::geometry::Sphere;
 use lowdisc_render::integrator::{DIMS_PER_BOUNCE, PathIntegrator, PathStats};
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
-use lowdisc_render::render::{trace_camera_sample, trace_spectral_sample};
-use lowdisc_render::scene::{CameraSpec, FilmSettings, Scene, SceneBuilder};
+use lowdisc_render::render::{Shot, trace_camera_sample, trace_spectral_sample};
+use lowdisc_render::scene::{Scene, SceneBuilder};
 use lowdisc_render::spectrum::Rgb;
+use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 
 /// One request made of the sampler.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -67,7 +68,7 @@ impl PixelSampler for CountingSampler {
 
 /// The camera at the centre of a closed sphere of `material`, lit by a point
 /// light inside it: every path scatters until its depth runs out.
-fn inside_a_sphere(material: Material) -> Scene {
+fn inside_a_sphere(material: Material) -> (Scene, View) {
     let mut b = SceneBuilder::new();
     let m = b.add_material(material);
     b.add_sphere(
@@ -84,12 +85,12 @@ fn inside_a_sphere(material: Material) -> Scene {
     );
     b.add_light(Light::Point(light.unwrap()));
     let look = Transform::look_at(Point3::ZERO, Point3::new(0.0, 0.0, 1.0), Vec3::Y).unwrap();
-    b.set_camera(CameraSpec {
+    let camera = CameraSpec {
         world_from_camera: look.inverse(),
         params: PerspectiveParams::default(),
-    });
-    b.set_film(FilmSettings::new([4, 4], Filter::default()));
-    b.build().unwrap()
+    };
+    let view = View::native(&ViewSpec::new(camera, [4, 4], Filter::default())).unwrap();
+    (b.build().unwrap(), view)
 }
 
 /// The draws the documentation promises for a path with `bounces` vertices.
@@ -108,22 +109,20 @@ fn documented(bounces: u32) -> Vec<Draw> {
     v
 }
 
-fn trace(scene: &Scene, max_depth: u32, seed: u64) -> (Rgb, Vec<Draw>) {
+fn trace((scene, view): &(Scene, View), max_depth: u32, seed: u64) -> (Rgb, Vec<Draw>) {
     let integrator = PathIntegrator {
         max_depth,
         ..PathIntegrator::default()
     };
     let mut sampler = CountingSampler::default();
     let mut stats = PathStats::default();
-    let (l, _) = trace_camera_sample(
+    let shot = Shot {
         scene,
-        &integrator,
-        &mut sampler,
-        [1, 2],
-        0,
+        view,
+        integrator: &integrator,
         seed,
-        &mut stats,
-    );
+    };
+    let (l, _) = trace_camera_sample(&shot, &mut sampler, [1, 2], 0, &mut stats);
     (l, sampler.log)
 }
 
@@ -172,8 +171,13 @@ fn spectral_samples_draw_the_wavelength_first_then_the_rgb_layout_shifted_by_one
     };
     let mut sampler = CountingSampler::default();
     let mut stats = PathStats::default();
-    let (xyz, _) =
-        trace_spectral_sample(&scene, &integrator, &mut sampler, [1, 2], 0, 0, &mut stats);
+    let shot = Shot {
+        scene: &scene.0,
+        view: &scene.1,
+        integrator: &integrator,
+        seed: 0,
+    };
+    let (xyz, _) = trace_spectral_sample(&shot, &mut sampler, [1, 2], 0, &mut stats);
     assert!(xyz.g > 0.0, "lit: {xyz:?}");
     let mut want = vec![Draw::Start(0), Draw::OneD(0), Draw::Pixel2d, Draw::TwoD(1)];
     for k in 0..3 {

@@ -11,8 +11,9 @@ use lowdisc_render::integrator::{LightStrategy, PathIntegrator};
 use lowdisc_render::light::{Light, PointLight, UniformInfiniteLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
-use lowdisc_render::scene::{CameraSpec, Emission, FilmSettings, Scene, SceneBuilder};
+use lowdisc_render::scene::{Emission, Scene, SceneBuilder};
 use lowdisc_render::spectrum::Rgb;
+use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 use std::f64::consts::PI;
 
 fn camera(from: Point3, at: Point3, fov: f32) -> CameraSpec {
@@ -31,12 +32,14 @@ fn camera(from: Point3, at: Point3, fov: f32) -> CameraSpec {
     }
 }
 
-fn film(res: u32) -> FilmSettings {
-    FilmSettings::new([res, res], Filter::box_filter([0.5, 0.5]).unwrap())
+/// `camera` on a `res x res` film with a box filter of radius 0.5.
+fn view(camera: CameraSpec, res: u32) -> View {
+    let filter = Filter::box_filter([0.5, 0.5]).unwrap();
+    View::native(&ViewSpec::new(camera, [res, res], filter)).unwrap()
 }
 
 /// Mean image value (channel average) of `scene` at `spp` and `max_depth`.
-fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64 {
+fn mean(scene: &Scene, view: &View, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64 {
     let opts = RenderOptions {
         integrator: PathIntegrator {
             max_depth,
@@ -47,7 +50,7 @@ fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64
         tile_size: 16,
         ..RenderOptions::new(SamplerName::ZSobol, 3, spp)
     };
-    let out = render(scene, &opts, &NoProgress).unwrap();
+    let out = render(scene, view, &opts, &NoProgress).unwrap();
     assert_eq!(out.stats.nonfinite_samples, 0);
     let m = out.mean();
     (m[0] + m[1] + m[2]) / 3.0
@@ -72,17 +75,16 @@ fn furnace_convex_sphere_in_uniform_light() {
     b.add_light(Light::UniformInfinite(
         UniformInfiniteLight::new(Rgb::ONE, 1.0, None).unwrap(),
     ));
-    b.set_camera(camera(Point3::new(0.0, 0.0, -5.0), Point3::ZERO, 8.0));
-    b.set_film(film(8));
+    let view = view(camera(Point3::new(0.0, 0.0, -5.0), Point3::ZERO, 8.0), 8);
     let scene = b.build().unwrap();
-    assert_eq!(mean(&scene, 16, 0, LightStrategy::Mis), 0.0);
+    assert_eq!(mean(&scene, &view, 16, 0, LightStrategy::Mis), 0.0);
     for depth in [1, 4] {
         for strategy in [
             LightStrategy::Mis,
             LightStrategy::BsdfOnly,
             LightStrategy::LightOnly,
         ] {
-            let v = mean(&scene, 256, depth, strategy);
+            let v = mean(&scene, &view, 256, depth, strategy);
             assert!((v - 0.5).abs() < 0.01, "depth {depth} {strategy:?}: {v}");
         }
     }
@@ -103,12 +105,11 @@ fn furnace_inside_emitting_sphere_follows_the_finite_sum() {
         m,
         Some(e),
     );
-    b.set_camera(camera(Point3::ZERO, Point3::new(0.0, 0.0, 1.0), 60.0));
-    b.set_film(film(8));
+    let view = view(camera(Point3::ZERO, Point3::new(0.0, 0.0, 1.0), 60.0), 8);
     let scene = b.build().unwrap();
     for depth in [0u32, 1, 2, 5] {
         let expected: f64 = (0..=depth).map(|k| 0.5f64.powi(k as i32)).sum();
-        let v = mean(&scene, 256, depth, LightStrategy::Mis);
+        let v = mean(&scene, &view, 256, depth, LightStrategy::Mis);
         assert!(
             (v - expected).abs() < 0.015 * expected,
             "depth {depth}: {v} vs {expected}"
@@ -136,24 +137,22 @@ fn point_light_inside_a_unit_sphere() {
     )
     .unwrap();
     b.add_light(Light::Point(pl));
-    b.set_camera(camera(
-        Point3::new(0.0, 0.1, 0.0),
-        Point3::new(0.3, 0.1, 1.0),
-        60.0,
-    ));
-    b.set_film(film(8));
+    let view = view(
+        camera(Point3::new(0.0, 0.1, 0.0), Point3::new(0.3, 0.1, 1.0), 60.0),
+        8,
+    );
     let scene = b.build().unwrap();
     for depth in [1u32, 2, 5] {
         let sum: f64 = (0..depth).map(|k| 0.5f64.powi(k as i32)).sum();
         let expected = 0.5 * 2.0 / PI * sum;
-        let v = mean(&scene, 128, depth, LightStrategy::Mis);
+        let v = mean(&scene, &view, 128, depth, LightStrategy::Mis);
         assert!(
             (v - expected).abs() < 0.015 * expected,
             "depth {depth}: {v} vs {expected}"
         );
     }
     // BSDF sampling alone can never reach a point light.
-    assert_eq!(mean(&scene, 4, 3, LightStrategy::BsdfOnly), 0.0);
+    assert_eq!(mean(&scene, &view, 4, 3, LightStrategy::BsdfOnly), 0.0);
 }
 
 fn quad(corners: [[f32; 3]; 4]) -> TriangleMesh {
@@ -212,17 +211,19 @@ fn bsdf_light_and_mis_sampling_agree_in_the_mean() {
         two_sided: false,
     };
     b.add_mesh(light, black, Some(emission));
-    b.set_camera(camera(
-        Point3::new(0.0, 0.6, -3.0),
-        Point3::new(0.0, 0.3, 0.0),
-        50.0,
-    ));
-    b.set_film(film(16));
+    let view = view(
+        camera(
+            Point3::new(0.0, 0.6, -3.0),
+            Point3::new(0.0, 0.3, 0.0),
+            50.0,
+        ),
+        16,
+    );
     let scene = b.build().unwrap();
     for depth in [1u32, 3] {
-        let mis = mean(&scene, 256, depth, LightStrategy::Mis);
-        let bsdf = mean(&scene, 256, depth, LightStrategy::BsdfOnly);
-        let light = mean(&scene, 256, depth, LightStrategy::LightOnly);
+        let mis = mean(&scene, &view, 256, depth, LightStrategy::Mis);
+        let bsdf = mean(&scene, &view, 256, depth, LightStrategy::BsdfOnly);
+        let light = mean(&scene, &view, 256, depth, LightStrategy::LightOnly);
         assert!(mis > 0.05, "{mis}");
         for (name, v) in [("bsdf", bsdf), ("light", light)] {
             assert!(
@@ -233,6 +234,7 @@ fn bsdf_light_and_mis_sampling_agree_in_the_mean() {
     }
     // More depth adds light (indirect bounces between floor and wall).
     assert!(
-        mean(&scene, 64, 3, LightStrategy::Mis) > 1.02 * mean(&scene, 64, 1, LightStrategy::Mis)
+        mean(&scene, &view, 64, 3, LightStrategy::Mis)
+            > 1.02 * mean(&scene, &view, 64, 1, LightStrategy::Mis)
     );
 }

@@ -5,6 +5,8 @@
 
 use lowdisc_render::pbrt::{LoadOptions, LoadedScene, SceneCounts, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
+use lowdisc_render::settings::Settings;
+use lowdisc_render::view::View;
 use std::path::PathBuf;
 
 fn load(rel: &str, envmap: Option<&str>) -> Option<LoadedScene> {
@@ -23,6 +25,11 @@ fn load(rel: &str, envmap: Option<&str>) -> Option<LoadedScene> {
     Some(loaded)
 }
 
+/// The settings the scene file asks for, resolved over the defaults.
+fn settings(l: &LoadedScene) -> Settings {
+    Settings::resolve(&[&l.settings.layer]).unwrap()
+}
+
 /// Triangles, spheres, disks, materials, non-area lights, emissive shapes;
 /// then the scene's total light count and the film resolution.
 fn check(l: &LoadedScene, c: [usize; 6], total_lights: usize, res: [u32; 2]) {
@@ -37,8 +44,8 @@ fn check(l: &LoadedScene, c: [usize; 6], total_lights: usize, res: [u32; 2]) {
     };
     assert_eq!(l.counts, want);
     assert_eq!(l.scene.lights().len(), total_lights);
-    assert_eq!(l.scene.camera().resolution(), res);
-    assert_eq!(l.settings.resolution, res);
+    assert_eq!(View::native(&l.view).unwrap().camera().resolution(), res);
+    assert_eq!(settings(l).resolution, res);
     assert_eq!(
         l.scene.prim_count(),
         c[0] + c[1] + c[2],
@@ -54,11 +61,12 @@ fn cornell_box() {
     // The light is a two-triangle quad: one area light per triangle.
     check(&l, [36, 0, 0, 8, 0, 1], 2, [1024, 1024]);
     assert!(l.warnings.is_empty(), "{:?}", l.warnings);
-    assert_eq!((l.settings.spp, l.settings.max_depth), (Some(64), Some(65)));
+    let s = settings(&l).render;
+    assert_eq!((s.sampler.spp, s.integrator.max_depth), (64, 65));
     assert_eq!(l.settings.output.as_deref(), Some("cornell-box.png"));
     // Transform [1 0 0 0  0 1 0 0  0 0 -1 0  0 -1 6.8 1] is camera-from-world:
     // the camera sits at (0, 1, 6.8).
-    let p = l.scene.camera().position();
+    let p = View::native(&l.view).unwrap().camera().position();
     assert!(
         (p.x).abs() < 1e-5 && (p.y - 1.0).abs() < 1e-5 && (p.z - 6.8).abs() < 1e-4,
         "{p:?}"
@@ -71,7 +79,7 @@ fn veach_mis() {
         return;
     };
     check(&l, [52, 3, 0, 6, 0, 3], 3, [1280, 720]);
-    assert_eq!(l.settings.max_depth, Some(3));
+    assert_eq!(settings(&l).render.integrator.max_depth, 3);
 }
 
 #[test]
@@ -140,7 +148,7 @@ fn classroom() {
     std::fs::write(&copy, text).unwrap();
     let l = load_pbrt_scene(&copy, &LoadOptions::default()).unwrap();
     check(&l, [103832, 0, 0, 44, 2, 0], 2, [1280, 720]);
-    assert_eq!(l.settings.spp, Some(8));
+    assert_eq!(settings(&l).render.sampler.spp, 8);
 }
 
 #[test]
@@ -177,13 +185,13 @@ fn bmw_m6() {
 
 #[test]
 fn cornell_box_renders_finite_at_16x16() {
-    let Some(mut l) = load("bitterli-cornell-box/scene-v4.pbrt", None) else {
+    let Some(l) = load("bitterli-cornell-box/scene-v4.pbrt", None) else {
         return;
     };
-    l.scene.set_resolution([16, 16]).unwrap();
+    let view = View::new(&l.view, [16, 16]).unwrap();
     let mut opts = RenderOptions::default();
     opts.sampler.spp = 1;
-    let out = render(&l.scene, &opts, &NoProgress).unwrap();
+    let out = render(&l.scene, &view, &opts, &NoProgress).unwrap();
     let m = out.mean();
     assert!(
         m.iter().all(|v| v.is_finite()) && m.iter().any(|&v| v > 0.0),

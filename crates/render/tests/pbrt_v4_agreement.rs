@@ -25,6 +25,8 @@ use lowdisc_render::bsdf::LayeredExitWeight;
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
+use lowdisc_render::settings::Settings;
+use lowdisc_render::view::View;
 
 /// What lowdisc's image and pbrt-v4's have in common.
 struct Agreement {
@@ -88,19 +90,19 @@ fn compare(
     let ref_path =
         shared_scenes::existing(shared_scenes::dir().join("../pbrt-v4-refs").join(reference))?;
     let theirs = read_image(&ref_path).unwrap();
-    let mut loaded = load_pbrt_scene(&scene_path, &LoadOptions::default()).unwrap();
+    let loaded = load_pbrt_scene(&scene_path, &LoadOptions::default()).unwrap();
     let (w, h) = (theirs.width() as u32, theirs.height() as u32);
-    loaded.scene.set_resolution([w, h]).unwrap();
+    let view = View::new(&loaded.view, [w, h]).unwrap();
+    let file = Settings::resolve(&[&loaded.settings.layer]).unwrap();
     let opts = RenderOptions {
         integrator: PathIntegrator {
-            max_depth: loaded.settings.max_depth.unwrap_or(5),
             layered_exit_weight,
-            ..PathIntegrator::default()
+            ..file.render.integrator
         },
         spectral,
         ..RenderOptions::new(SamplerName::ZSobol, 1, spp)
     };
-    let out = render(&loaded.scene, &opts, &NoProgress).unwrap();
+    let out = render(&loaded.scene, &view, &opts, &NoProgress).unwrap();
     let a = agreement(&out.image, &theirs);
     println!(
         "{scene} ({}, {} layered weight, {spp} spp): \

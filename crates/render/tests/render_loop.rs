@@ -8,12 +8,14 @@ use lowdisc_render::cornell::cornell_box;
 use lowdisc_render::film::PixelBounds;
 use lowdisc_render::filter::Filter;
 use lowdisc_render::geometry::Sphere;
-use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
+use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
 use lowdisc_render::render::{MAX_SPP, NoProgress, Progress, RenderOptions, render};
-use lowdisc_render::scene::{CameraSpec, Emission, FilmSettings, SceneBuilder};
+use lowdisc_render::scene::{Emission, Scene, SceneBuilder};
+use lowdisc_render::settings::ranges::MAX_DEPTH_LIMIT;
 use lowdisc_render::spectrum::Rgb;
+use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 use std::sync::Mutex;
 
 fn opts(sampler: SamplerName, spp: u32, threads: usize) -> RenderOptions {
@@ -34,7 +36,7 @@ fn bits(p: &[[f32; 3]]) -> Vec<u32> {
 
 #[test]
 fn output_is_bit_identical_with_one_and_two_threads() {
-    let scene = cornell_box([40, 24]).unwrap();
+    let (scene, view) = cornell_box([40, 24]).unwrap();
     for name in [
         SamplerName::ZSobol,
         SamplerName::ZSobolJoint,
@@ -44,15 +46,15 @@ fn output_is_bit_identical_with_one_and_two_threads() {
         SamplerName::Independent,
         SamplerName::Halton,
     ] {
-        let a = render(&scene, &opts(name, 4, 1), &NoProgress).unwrap();
-        let b = render(&scene, &opts(name, 4, 2), &NoProgress).unwrap();
+        let a = render(&scene, &view, &opts(name, 4, 1), &NoProgress).unwrap();
+        let b = render(&scene, &view, &opts(name, 4, 2), &NoProgress).unwrap();
         assert_eq!(bits(a.image.pixels()), bits(b.image.pixels()), "{name}");
         assert_eq!(a.stats.rays, b.stats.rays, "{name}");
         assert_eq!(a.stats.samples, 40 * 24 * 4);
         // A different seed changes the image (the test can fail).
         let mut o = opts(name, 4, 2);
         o.sampler.seed = 8;
-        let c = render(&scene, &o, &NoProgress).unwrap();
+        let c = render(&scene, &view, &o, &NoProgress).unwrap();
         assert_ne!(
             bits(a.image.pixels()),
             bits(c.image.pixels()),
@@ -66,12 +68,12 @@ fn paper_threshold_reaches_the_sampler() {
     // Threshold 1 leaves every column unflipped: the reproducible paper
     // sampler then renders exactly what plain Sobol renders; threshold 0.5
     // does not.
-    let scene = cornell_box([16, 16]).unwrap();
-    let sobol = render(&scene, &opts(SamplerName::Sobol, 4, 2), &NoProgress).unwrap();
+    let (scene, view) = cornell_box([16, 16]).unwrap();
+    let sobol = render(&scene, &view, &opts(SamplerName::Sobol, 4, 2), &NoProgress).unwrap();
     let paper = |t: f64| {
         let mut o = opts(SamplerName::PaperRepro, 4, 2);
         o.sampler.threshold = t;
-        render(&scene, &o, &NoProgress).unwrap()
+        render(&scene, &view, &o, &NoProgress).unwrap()
     };
     assert_eq!(bits(paper(1.0).image.pixels()), bits(sobol.image.pixels()));
     assert_ne!(bits(paper(0.5).image.pixels()), bits(sobol.image.pixels()));
@@ -79,8 +81,14 @@ fn paper_threshold_reaches_the_sampler() {
 
 #[test]
 fn cornell_box_has_finite_positive_mean_red_left_green_right() {
-    let scene = cornell_box([32, 32]).unwrap();
-    let out = render(&scene, &opts(SamplerName::ZSobol, 16, 2), &NoProgress).unwrap();
+    let (scene, view) = cornell_box([32, 32]).unwrap();
+    let out = render(
+        &scene,
+        &view,
+        &opts(SamplerName::ZSobol, 16, 2),
+        &NoProgress,
+    )
+    .unwrap();
     assert!(out.warnings.is_empty(), "{:?}", out.warnings);
     assert_eq!(out.stats.nonfinite_samples, 0);
     let m = out.mean();
@@ -128,7 +136,7 @@ fn cornell_box_has_finite_positive_mean_red_left_green_right() {
 }
 
 /// A diffuse sphere seen by a camera, lit by a point light.
-fn sphere_scene(reflectance: Rgb, with_light: bool) -> lowdisc_render::scene::Scene {
+fn sphere_scene(reflectance: Rgb, with_light: bool) -> (Scene, View) {
     let mut b = SceneBuilder::new();
     let m = b.add_material(Material::diffuse(reflectance));
     b.add_sphere(
@@ -147,30 +155,30 @@ fn sphere_scene(reflectance: Rgb, with_light: bool) -> lowdisc_render::scene::Sc
         b.add_light(Light::Point(l.unwrap()));
     }
     let look = Transform::look_at(Point3::new(0.0, 0.0, -5.0), Point3::ZERO, Vec3::Y).unwrap();
-    b.set_camera(CameraSpec {
+    let camera = CameraSpec {
         world_from_camera: look.inverse(),
         params: PerspectiveParams {
             fov: 30.0,
             ..PerspectiveParams::default()
         },
-    });
-    b.set_film(FilmSettings::new(
-        [16, 16],
-        Filter::box_filter([0.5, 0.5]).unwrap(),
-    ));
-    b.build().unwrap()
+    };
+    let filter = Filter::box_filter([0.5, 0.5]).unwrap();
+    let view = View::native(&ViewSpec::new(camera, [16, 16], filter)).unwrap();
+    (b.build().unwrap(), view)
 }
 
 #[test]
 fn scene_without_lights_renders_black_with_a_warning() {
-    let scene = sphere_scene(Rgb::splat(0.5), false);
-    let out = render(&scene, &opts(SamplerName::ZSobol, 2, 1), &NoProgress).unwrap();
+    let (scene, view) = sphere_scene(Rgb::splat(0.5), false);
+    let out = render(&scene, &view, &opts(SamplerName::ZSobol, 2, 1), &NoProgress).unwrap();
     assert!(out.image.pixels().iter().all(|p| *p == [0.0; 3]));
     assert_eq!(out.warnings.len(), 1);
     assert!(out.warnings[0].contains("no lights"), "{:?}", out.warnings);
     // The same scene with a light is not black.
+    let (lit_scene, view) = sphere_scene(Rgb::splat(0.5), true);
     let lit = render(
-        &sphere_scene(Rgb::splat(0.5), true),
+        &lit_scene,
+        &view,
         &opts(SamplerName::ZSobol, 2, 1),
         &NoProgress,
     )
@@ -195,16 +203,14 @@ fn nonfinite_samples_are_counted_and_never_written() {
         Some(e),
     );
     let look = Transform::look_at(Point3::ZERO, Point3::new(0.0, 0.0, 1.0), Vec3::Y).unwrap();
-    b.set_camera(CameraSpec {
+    let camera = CameraSpec {
         world_from_camera: look.inverse(),
         params: PerspectiveParams::default(),
-    });
-    b.set_film(FilmSettings::new(
-        [8, 8],
-        Filter::box_filter([0.5, 0.5]).unwrap(),
-    ));
+    };
+    let filter = Filter::box_filter([0.5, 0.5]).unwrap();
+    let view = View::native(&ViewSpec::new(camera, [8, 8], filter)).unwrap();
     let scene = b.build().unwrap();
-    let out = render(&scene, &opts(SamplerName::ZSobol, 2, 2), &NoProgress).unwrap();
+    let out = render(&scene, &view, &opts(SamplerName::ZSobol, 2, 2), &NoProgress).unwrap();
     assert!(out.stats.nonfinite_samples > 0);
     assert!(out.image.pixels().iter().flatten().all(|v| v.is_finite()));
     assert!(
@@ -215,16 +221,16 @@ fn nonfinite_samples_are_counted_and_never_written() {
     // With maxdepth 0 nothing overflows.
     let mut o = opts(SamplerName::ZSobol, 2, 2);
     o.integrator.max_depth = 0;
-    let out = render(&scene, &o, &NoProgress).unwrap();
+    let out = render(&scene, &view, &o, &NoProgress).unwrap();
     assert_eq!(out.stats.nonfinite_samples, 0);
 }
 
 #[test]
 fn progress_reports_every_tile_and_bad_options_are_errors() {
-    let scene = cornell_box([20, 10]).unwrap();
+    let (scene, view) = cornell_box([20, 10]).unwrap();
     let seen = Mutex::new(Vec::new());
     let sink = |p: Progress| seen.lock().unwrap().push(p);
-    let out = render(&scene, &opts(SamplerName::Independent, 1, 2), &sink).unwrap();
+    let out = render(&scene, &view, &opts(SamplerName::Independent, 1, 2), &sink).unwrap();
     let seen = seen.into_inner().unwrap();
     assert_eq!(seen.len(), 6, "3x2 tiles of 8x8");
     let last = seen.iter().max_by_key(|p| p.tiles_done).unwrap();
@@ -258,36 +264,36 @@ fn progress_reports_every_tile_and_bad_options_are_errors() {
         with_threshold(SamplerName::Paper, 1.5),
     ] {
         assert!(bad.validate().is_err(), "{bad:?}");
-        assert!(render(&scene, &bad, &NoProgress).is_err());
+        assert!(render(&scene, &view, &bad, &NoProgress).is_err());
     }
 }
 
 #[test]
 fn the_image_of_a_renders_sums_is_its_image() {
     use lowdisc_render::render::image_of_sums;
-    let scene = cornell_box([24, 16]).unwrap();
-    let params = scene.film().params.clone();
+    let (scene, view) = cornell_box([24, 16]).unwrap();
     for spectral in [false, true] {
         let o = RenderOptions {
             spectral,
             window: Some(PixelBounds::new([3, 2], [19, 13])),
             ..opts(SamplerName::ZSobol, 4, 2)
         };
-        let out = render(&scene, &o, &NoProgress).unwrap();
+        let out = render(&scene, &view, &o, &NoProgress).unwrap();
         let window = out.film.pixel_bounds();
         let sums = out.film.sums();
-        let image = image_of_sums(&params, window, spectral, sums).unwrap();
+        let image = image_of_sums(&view, window, spectral, sums).unwrap();
         assert_eq!(bits(image.pixels()), bits(out.image.pixels()), "{spectral}");
         // The other mode's output gives another image.
-        let other = image_of_sums(&params, window, !spectral, sums).unwrap();
+        let other = image_of_sums(&view, window, !spectral, sums).unwrap();
         assert_ne!(bits(other.pixels()), bits(out.image.pixels()), "{spectral}");
-        // The film's white balance reaches the spectral output only.
-        let mut warm = params.clone();
-        warm.white_balance = 4000.0;
+        // The film's white balance reaches the output in either mode.
+        let mut warm = view.spec().clone();
+        warm.film.white_balance = 4000.0;
+        let warm = View::native(&warm).unwrap();
         let balanced = image_of_sums(&warm, window, spectral, sums).unwrap();
-        assert_eq!(bits(balanced.pixels()) == bits(image.pixels()), !spectral);
+        assert_ne!(bits(balanced.pixels()), bits(image.pixels()), "{spectral}");
         // Sums of another window's size are refused.
         let small = PixelBounds::new([3, 2], [19, 12]);
-        assert!(image_of_sums(&params, small, spectral, sums).is_err());
+        assert!(image_of_sums(&view, small, spectral, sums).is_err());
     }
 }

@@ -14,9 +14,10 @@ use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::light::{Light, UniformInfiniteLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
 use lowdisc_render::render::{NoProgress, RenderOptions, RenderOutput, render};
-use lowdisc_render::scene::{CameraSpec, Emission, FilmSettings, Scene, SceneBuilder};
+use lowdisc_render::scene::{Emission, Scene, SceneBuilder};
 use lowdisc_render::spectrum::Rgb;
 use lowdisc_render::spectrum::uplift::{albedo, illuminant_d65};
+use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 
 fn camera(from: Point3, at: Point3, fov: f32) -> CameraSpec {
     let look = Transform::look_at(from, at, Vec3::Y).unwrap();
@@ -29,7 +30,19 @@ fn camera(from: Point3, at: Point3, fov: f32) -> CameraSpec {
     }
 }
 
-fn run(scene: &Scene, spp: u32, max_depth: u32, spectral: bool, threads: usize) -> RenderOutput {
+/// `camera` on a `res x res` film with a box filter of radius 0.5.
+fn view(camera: CameraSpec, res: u32) -> View {
+    let filter = Filter::box_filter([0.5, 0.5]).unwrap();
+    View::native(&ViewSpec::new(camera, [res, res], filter)).unwrap()
+}
+
+fn run(
+    (scene, view): &(Scene, View),
+    spp: u32,
+    max_depth: u32,
+    spectral: bool,
+    threads: usize,
+) -> RenderOutput {
     let opts = RenderOptions {
         integrator: PathIntegrator {
             max_depth,
@@ -40,14 +53,14 @@ fn run(scene: &Scene, spp: u32, max_depth: u32, spectral: bool, threads: usize) 
         spectral,
         ..RenderOptions::new(SamplerName::ZSobol, 5, spp)
     };
-    let out = render(scene, &opts, &NoProgress).unwrap();
+    let out = render(scene, view, &opts, &NoProgress).unwrap();
     assert_eq!(out.stats.nonfinite_samples, 0);
     out
 }
 
 /// A sphere of reflectance `rgb` filling the view in a uniform white
 /// environment (a furnace: every ray leaving the convex sphere escapes).
-fn furnace(rgb: Rgb) -> Scene {
+fn furnace(rgb: Rgb) -> (Scene, View) {
     let mut b = SceneBuilder::new();
     let m = b.add_material(Material::diffuse(rgb));
     b.add_sphere(
@@ -58,12 +71,8 @@ fn furnace(rgb: Rgb) -> Scene {
     b.add_light(Light::UniformInfinite(
         UniformInfiniteLight::new(Rgb::ONE, 1.0, None).unwrap(),
     ));
-    b.set_camera(camera(Point3::new(0.0, 0.0, -5.0), Point3::ZERO, 8.0));
-    b.set_film(FilmSettings::new(
-        [16, 16],
-        Filter::box_filter([0.5, 0.5]).unwrap(),
-    ));
-    b.build().unwrap()
+    let view = view(camera(Point3::new(0.0, 0.0, -5.0), Point3::ZERO, 8.0), 16);
+    (b.build().unwrap(), view)
 }
 
 #[test]
@@ -102,12 +111,8 @@ fn saturated_reflectance_follows_its_uplifted_spectrum() {
         m,
         Some(e),
     );
-    b.set_camera(camera(Point3::ZERO, Point3::new(0.0, 0.0, 1.0), 60.0));
-    b.set_film(FilmSettings::new(
-        [8, 8],
-        Filter::box_filter([0.5, 0.5]).unwrap(),
-    ));
-    let scene = b.build().unwrap();
+    let view = view(camera(Point3::ZERO, Point3::new(0.0, 0.0, 1.0), 60.0), 8);
+    let scene = (b.build().unwrap(), view);
     let depth = 4u32;
     let s = albedo(rho);
     let predicted = srgb_of(|l| (0..=depth).map(|k| s.eval(l).powi(k as i32)).sum());

@@ -19,11 +19,12 @@ use lowdisc_render::light::{Light, UniformInfiniteLight};
 use lowdisc_render::math::{Point2, Point3, Transform, Vec3};
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::render::{NoProgress, RenderOptions, render};
-use lowdisc_render::scene::{CameraSpec, FilmSettings, SceneBuilder};
+use lowdisc_render::scene::SceneBuilder;
 use lowdisc_render::spectrum::Rgb;
 use lowdisc_render::texture::{
     Checker, FloatTexture, ImageTexture, SpectrumTexture, TexImage, TextureMapping,
 };
+use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 use std::f32::consts::PI;
 use std::sync::Arc;
 
@@ -99,18 +100,16 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
         UniformInfiniteLight::new(Rgb::ONE, 1.0, None).unwrap(),
     ));
     let look = Transform::look_at(Point3::new(0.0, 0.0, 5.0), Point3::ZERO, Vec3::Y).unwrap();
-    b.set_camera(CameraSpec {
+    let camera = CameraSpec {
         world_from_camera: look.inverse(),
         // Half-width 5 tan(10°) = 0.88 < 1: the plane fills the image.
         params: PerspectiveParams {
             fov: 20.0,
             ..PerspectiveParams::default()
         },
-    });
-    b.set_film(FilmSettings::new(
-        [8, 8],
-        Filter::box_filter([0.5, 0.5]).unwrap(),
-    ));
+    };
+    let filter = Filter::box_filter([0.5, 0.5]).unwrap();
+    let view = View::native(&ViewSpec::new(camera, [8, 8], filter)).unwrap();
     let scene = b.build().unwrap();
     let opts = RenderOptions {
         integrator: PathIntegrator {
@@ -122,7 +121,7 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
         tile_size: 8,
         ..RenderOptions::new(SamplerName::ZSobol, 11, 64)
     };
-    let out = render(&scene, &opts, &NoProgress).unwrap();
+    let out = render(&scene, &view, &opts, &NoProgress).unwrap();
     let px = |x: usize, y: usize| Rgb::from_array(out.image.get(x, y).unwrap());
     // Each 4x4 quadrant of pixels lies inside one checker square; whatever
     // the camera's handedness, opposite quadrants share an albedo and

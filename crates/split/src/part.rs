@@ -2,11 +2,14 @@
 //! over its sample range) and [`PartInfo`], what a part must agree on with
 //! the others to be merged.
 
+use lowdisc::catalog::SamplerConfig;
 use lowdisc_image::{ImageError, RgbImage};
-use lowdisc_render::film::{Film, FilmParams, PixelBounds, PixelSum};
-use lowdisc_render::render::{RenderError, RenderOptions, RenderOutput, SampleRange};
+use lowdisc_render::film::{FilmParams, PixelBounds, PixelSum};
+use lowdisc_render::integrator::PathIntegrator;
+use lowdisc_render::render::{RenderOptions, RenderOutput, SampleRange};
 use lowdisc_render::scene::Scene;
-use lowdisc_render::spectrum::sensor::{output_from_sensor, sensor_to_output};
+use lowdisc_render::spectrum::sensor::{output_matrix, sensor_to_output};
+use lowdisc_render::view::View;
 use sha2::{Digest, Sha256};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -44,39 +47,40 @@ pub struct RenderPart {
 }
 
 impl RenderPart {
-    /// The part that `output` (a render of `scene` with `opts`) holds.
+    /// The part that `output` (a render of `scene` through `view` with
+    /// `opts`) holds.
     pub fn new(
         scene: &Scene,
+        view: &View,
         opts: &RenderOptions,
         output: &RenderOutput,
-    ) -> Result<RenderPart, RenderError> {
-        RenderPart::of_render(scene_hash(scene), &scene.film().params, opts, output)
+    ) -> RenderPart {
+        RenderPart::of_render(scene_hash(scene, view), view, opts, output)
     }
 
-    /// The part that `output` holds, a render with `opts` of a scene named
-    /// `scene` whose film has `params`: for a caller that names the scene
-    /// itself (an experiment's plan, by its content hash) instead of
-    /// hashing the parsed scene ([`scene_hash`]) for every part.
+    /// The part that `output` holds, a render through `view` with `opts` of
+    /// a scene named `scene`: for a caller that names the scene itself (an
+    /// experiment's plan, by its content hash) instead of hashing the
+    /// parsed scene ([`scene_hash`]) for every part.
     pub fn of_render(
         scene: String,
-        params: &FilmParams,
+        view: &View,
         opts: &RenderOptions,
         output: &RenderOutput,
-    ) -> Result<RenderPart, RenderError> {
-        let film_bounds = Film::checked_bounds(params).map_err(RenderError::Film)?;
-        Ok(RenderPart {
+    ) -> RenderPart {
+        RenderPart {
             info: PartInfo {
                 scene,
-                settings: settings_of(params, opts),
-                resolution: params.resolution,
-                film_bounds,
+                settings: settings(opts, view.film()),
+                resolution: view.resolution(),
+                film_bounds: view.pixel_bounds(),
                 window: output.film.pixel_bounds(),
                 samples: opts.sample_range(),
                 spp: opts.sampler.spp,
                 nonfinite: output.stats.nonfinite_samples,
             },
             sums: output.film.sums().to_vec(),
-        })
+        }
     }
 
     /// True when the part holds every pixel of the film and every sample.
@@ -99,10 +103,9 @@ impl RenderPart {
     /// does.
     pub fn values(&self) -> Vec<[f32; 3]> {
         let s = &self.info.settings;
-        let output = (s.get("spectral").map(String::as_str) == Some("true")).then(|| {
-            let white_balance = s.get("white_balance").and_then(|w| w.parse().ok());
-            output_from_sensor(white_balance.unwrap_or(0.0))
-        });
+        let spectral = s.get("spectral").map(String::as_str) == Some("true");
+        let white_balance = s.get("white_balance").and_then(|w| w.parse().ok());
+        let output = output_matrix(spectral, white_balance.unwrap_or(0.0));
         let sums = self.sums.iter().map(PixelSum::value);
         match output {
             Some(m) => sums.map(|v| sensor_to_output(&m, v)).collect(),
@@ -111,51 +114,84 @@ impl RenderPart {
     }
 }
 
-/// [`settings`], and for a spectral render the film's white balance, which
-/// takes its pixels from the sensor to the output.
-fn settings_of(params: &FilmParams, opts: &RenderOptions) -> BTreeMap<String, String> {
-    let mut s = settings(opts);
-    if opts.spectral {
-        s.insert(
-            "white_balance".into(),
-            format!("{:?}", params.white_balance),
-        );
-    }
-    s
-}
-
-/// The settings of `opts` that change pixels, by name: the sampler, its
-/// seed, samples per pixel, threshold and paper-dimensions flag, the path
-/// tracer's depth and light strategy, and the tile size (the tile grid keys
-/// the paper's literal stream). Threads, window and sample range are not
-/// settings: parts differ in them.
-pub fn settings(opts: &RenderOptions) -> BTreeMap<String, String> {
-    let s = &opts.sampler;
+/// The settings that change pixels, by name: every field of the render
+/// options and of the film's parameters except those parts differ in
+/// (threads, window, sample range) and those recorded elsewhere in
+/// [`PartInfo`] (resolution, crop). The structures are destructured
+/// field by field, so a new setting cannot be added without deciding here
+/// whether parts that differ in it may be merged.
+pub fn settings(opts: &RenderOptions, film: &FilmParams) -> BTreeMap<String, String> {
+    let RenderOptions {
+        sampler,
+        integrator,
+        threads: _,
+        tile_size,
+        window: _,
+        samples: _,
+        spectral,
+    } = *opts;
+    let SamplerConfig {
+        name,
+        seed,
+        threshold,
+        paper_all_dims,
+        spp,
+        resolution: _,
+    } = sampler;
+    let PathIntegrator {
+        max_depth,
+        strategy,
+        layered_exit_weight,
+    } = integrator;
+    let FilmParams {
+        resolution: _,
+        crop_window: _,
+        pixel_bounds: _,
+        iso,
+        exposure_time,
+        max_component_value,
+        white_balance,
+        filename: _,
+    } = film;
     [
-        ("sampler", s.name.to_string()),
-        ("seed", s.seed.to_string()),
-        ("spp", s.spp.to_string()),
-        ("threshold", format!("{:?}", s.threshold)),
-        ("paper_all_dims", s.paper_all_dims.to_string()),
-        ("maxdepth", opts.integrator.max_depth.to_string()),
-        ("light_strategy", format!("{:?}", opts.integrator.strategy)),
-        ("tile_size", opts.tile_size.to_string()),
-        ("spectral", opts.spectral.to_string()),
+        ("sampler", name.to_string()),
+        ("seed", seed.to_string()),
+        ("spp", spp.to_string()),
+        ("threshold", format!("{threshold:?}")),
+        ("paper_all_dims", paper_all_dims.to_string()),
+        ("maxdepth", max_depth.to_string()),
+        ("light_strategy", format!("{strategy:?}")),
+        ("layered_weight", layered_exit_weight.name().to_string()),
+        ("tile_size", tile_size.to_string()),
+        ("spectral", spectral.to_string()),
+        ("iso", format!("{iso:?}")),
+        ("exposure_time", format!("{exposure_time:?}")),
+        ("max_component_value", format!("{max_component_value:?}")),
+        ("white_balance", format!("{white_balance:?}")),
     ]
     .into_iter()
     .map(|(k, v)| (k.to_string(), v))
     .collect()
 }
 
-/// The SHA-256 (hexadecimal) of the parsed scene: [`Scene::write_content`]
-/// (every shape, material, light, the camera and the film's parameters in
-/// `Debug` form, floats in their exact shortest form) streamed through the
-/// hasher, never held in memory. It names what is rendered, not where it was read from, so parts
-/// rendered from copies of a scene in different folders agree.
-pub fn scene_hash(scene: &Scene) -> String {
+/// The first line of what [`scene_hash`] hashes, raised whenever what it
+/// covers changes.
+pub const SCENE_HASH_VERSION: &str = "lowdisc scene hash 2: scene content, camera, filter";
+
+/// The SHA-256 (hexadecimal) of the parsed scene and of how the view sees
+/// it: [`Scene::write_content`] (every shape, material, light) and the
+/// view's camera and pixel filter, streamed through the hasher, never held
+/// in memory. The film's parameters are settings ([`settings`]) and
+/// [`PartInfo`] fields. It names what is rendered, not where it was read
+/// from, so parts rendered from copies of a scene in different folders
+/// agree.
+pub fn scene_hash(scene: &Scene, view: &View) -> String {
     let mut sink = HashSink(Sha256::new());
+    // The version of what is hashed: parts of another version never merge.
+    let _ = writeln!(sink, "{SCENE_HASH_VERSION}");
     // The sink never fails, and `Debug` of the scene's data never fails.
     let _ = scene.write_content(&mut sink);
+    let _ = write!(sink, "\n{:?}\n{:?}", view.spec().camera, view.filter());
     let digest = sink.0.finalize();
     digest.iter().fold(String::with_capacity(64), |mut s, b| {
         let _ = write!(s, "{b:02x}");

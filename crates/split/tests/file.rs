@@ -11,7 +11,7 @@ use lowdisc_render::render::{NoProgress, RenderOptions, SampleRange, render};
 use lowdisc_split::{RenderPart, decode_part, encode_part};
 
 fn part() -> RenderPart {
-    let scene = cornell_box([20, 12]).unwrap();
+    let (scene, view) = cornell_box([20, 12]).unwrap();
     let o = RenderOptions {
         integrator: PathIntegrator {
             max_depth: 2,
@@ -21,8 +21,8 @@ fn part() -> RenderPart {
         samples: Some(SampleRange::new(1, 3)),
         ..RenderOptions::new(SamplerName::SobolOwen, 4, 3)
     };
-    let out = render(&scene, &o, &NoProgress).unwrap();
-    RenderPart::new(&scene, &o, &out).unwrap()
+    let out = render(&scene, &view, &o, &NoProgress).unwrap();
+    RenderPart::new(&scene, &view, &o, &out)
 }
 
 #[test]

@@ -4,17 +4,19 @@
 //! refused with the part named.
 
 use lowdisc::catalog::SamplerName;
-use lowdisc_render::cornell::cornell_box;
+use lowdisc_render::bsdf::LayeredExitWeight;
+use lowdisc_render::cornell::{cornell_box, cornell_box_with_camera, cornell_camera_with_lens};
 use lowdisc_render::film::PixelBounds;
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::render::{NoProgress, RenderOptions, SampleRange, render};
 use lowdisc_render::scene::Scene;
+use lowdisc_render::view::View;
 use lowdisc_split::{NamedPart, RenderPart, merge};
 
 const W: i32 = 24;
 const H: i32 = 16;
 
-fn scene() -> Scene {
+fn scene() -> (Scene, View) {
     cornell_box([W as u32, H as u32]).unwrap()
 }
 
@@ -30,11 +32,11 @@ fn opts(sampler: SamplerName, seed: u64) -> RenderOptions {
     }
 }
 
-fn part(scene: &Scene, o: RenderOptions, name: &str) -> NamedPart {
-    let out = render(scene, &o, &NoProgress).unwrap();
+fn part((scene, view): &(Scene, View), o: RenderOptions, name: &str) -> NamedPart {
+    let out = render(scene, view, &o, &NoProgress).unwrap();
     NamedPart {
         name: name.to_string(),
-        part: RenderPart::new(scene, &o, &out).unwrap(),
+        part: RenderPart::new(scene, view, &o, &out),
     }
 }
 
@@ -42,7 +44,11 @@ fn window(x0: i32, x1: i32, y0: i32, y1: i32) -> Option<PixelBounds> {
     Some(PixelBounds::new([x0, y0], [x1, y1]))
 }
 
-fn split(scene: &Scene, o: RenderOptions, windows: &[Option<PixelBounds>]) -> Vec<NamedPart> {
+fn split(
+    scene: &(Scene, View),
+    o: RenderOptions,
+    windows: &[Option<PixelBounds>],
+) -> Vec<NamedPart> {
     let parts = windows.iter().enumerate();
     parts
         .map(|(i, &w)| part(scene, RenderOptions { window: w, ..o }, &format!("p{i}")))
@@ -192,9 +198,27 @@ fn bad_splits_are_refused_naming_the_part() {
         "other-seed",
     ));
     assert_eq!(err(&seeds), "other-seed: seed 9 differs from p0's 0");
+    // The layered materials' exit weight changes pixels too.
+    let mut weights = split(&scene, o, &[window(0, 12, 0, H)]);
+    let mut pbrt = o;
+    pbrt.integrator.layered_exit_weight = LayeredExitWeight::PBRT_V4;
+    let half = window(12, W, 0, H);
+    weights.push(part(
+        &scene,
+        RenderOptions {
+            window: half,
+            ..pbrt
+        },
+        "pbrt",
+    ));
+    assert_eq!(
+        err(&weights),
+        "pbrt: layered_weight pbrt-v4 differs from p0's unbiased"
+    );
     let mut scenes = split(&scene, o, &[window(0, 12, 0, H)]);
-    let other = cornell_box([W as u32, H as u32 + 1]).unwrap();
-    let mut p = part(
+    let lens = cornell_camera_with_lens(40.0, 1000.0).unwrap();
+    let other = cornell_box_with_camera([W as u32, H as u32], lens).unwrap();
+    let p = part(
         &other,
         RenderOptions {
             window: window(12, W, 0, H),
@@ -202,7 +226,6 @@ fn bad_splits_are_refused_naming_the_part() {
         },
         "s",
     );
-    p.part.info.resolution = scenes[0].part.info.resolution;
     scenes.push(p);
     assert!(
         err(&scenes).starts_with("s: scene hash "),
@@ -227,13 +250,15 @@ fn bad_splits_are_refused_naming_the_part() {
 
 #[test]
 fn the_scene_hash_is_stable_and_tells_scenes_apart() {
-    let a = lowdisc_split::scene_hash(&scene());
-    assert_eq!(a, lowdisc_split::scene_hash(&scene()));
+    let hash = |(scene, view): (Scene, View)| lowdisc_split::scene_hash(&scene, &view);
+    let a = hash(scene());
+    assert_eq!(a, hash(scene()));
     assert_eq!(a.len(), 64);
-    assert_ne!(
-        a,
-        lowdisc_split::scene_hash(&cornell_box([24, 17]).unwrap())
-    );
+    // Another camera is another view of the scene, and another hash.
+    let lens = cornell_camera_with_lens(40.0, 1000.0).unwrap();
+    assert_ne!(a, hash(cornell_box_with_camera([24, 16], lens).unwrap()));
+    // The resolution is not content: the part records it.
+    assert_eq!(a, hash(cornell_box([24, 17]).unwrap()));
 }
 
 #[test]
@@ -241,7 +266,8 @@ fn bad_windows_and_ranges_are_refused_before_rendering() {
     let scene = scene();
     let o = opts(SamplerName::ZSobol, 0);
     let e = render(
-        &scene,
+        &scene.0,
+        &scene.1,
         &RenderOptions {
             window: window(0, 25, 0, H),
             ..o
@@ -255,9 +281,14 @@ fn bad_windows_and_ranges_are_refused_before_rendering() {
         "{e}"
     );
     let r = Some(SampleRange::new(2, 5));
-    let e = render(&scene, &RenderOptions { samples: r, ..o }, &NoProgress)
-        .unwrap_err()
-        .to_string();
+    let e = render(
+        &scene.0,
+        &scene.1,
+        &RenderOptions { samples: r, ..o },
+        &NoProgress,
+    )
+    .unwrap_err()
+    .to_string();
     assert!(
         e.contains("sample range 2..5 must be non-empty and within 0..4"),
         "{e}"
@@ -271,7 +302,7 @@ fn spectral_parts_hold_and_merge_to_the_single_renders_rgb_image() {
         spectral: true,
         ..opts(SamplerName::ZSobol, 5)
     };
-    let out = render(&scene, &o, &NoProgress).unwrap();
+    let out = render(&scene.0, &scene.1, &o, &NoProgress).unwrap();
     let expected = out.film.to_image().unwrap();
     let halves = [window(0, 12, 0, H), window(12, W, 0, H)];
     let merged = merge(&split(&scene, o, &halves)).unwrap();

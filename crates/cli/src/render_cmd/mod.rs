@@ -1,8 +1,11 @@
 //! `lowdisc render`: path-trace a pbrt-v4 scene file or the built-in Cornell
 //! box with any of lowdisc's samplers and write EXR or PNG.
 //!
-//! Arguments become a validated [`RenderConfig`] before any work starts; the
-//! render itself runs in the `lowdisc-render` library, which reports progress
+//! Arguments become a [`RenderConfig`] before any work starts: the flags'
+//! settings form one [`SettingsLayer`], checked by
+//! [`Settings::resolve`] (the renderer's one definition of every range,
+//! whose errors name the flag) and resolved again over the scene file's
+//! layer once it is loaded. The render itself runs in the `lowdisc-render` library, which reports progress
 //! through a callback that drives [`crate::progress::Reporter`] (a bar on a
 //! terminal, lines otherwise, nothing with `--quiet`), which also says where
 //! the image went. Warnings go to stderr, each distinct
@@ -16,23 +19,16 @@ use std::collections::HashSet;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Context, Result, bail};
 use clap::Args;
-use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_render::bsdf::LayeredExitWeight;
-use lowdisc_render::film::PixelBounds;
-use lowdisc_render::integrator::PathIntegrator;
-use lowdisc_render::render::{Progress, RenderOptions, SampleRange, render};
+use lowdisc_render::render::{Progress, render};
+use lowdisc_render::settings::{Given, Settings, SettingsLayer};
 
 use crate::progress::Reporter;
 use crate::render_stats::{self, Phases};
 use crate::{limits, parse, split_cmd};
 use prepare::{check_output, prepare, warn_once};
-
-/// The largest image side `--res` accepts.
-pub const MAX_SIDE: u32 = 16_384;
-/// The most pixels `--res` accepts (a 16k x 16k image).
-pub const MAX_PIXELS: u64 = 1 << 28;
 
 /// The long help of `render`.
 pub const LONG_ABOUT: &str = "\
@@ -82,9 +78,9 @@ pub struct RenderArgs {
     /// Samples per pixel [default: the scene's, else 16].
     #[arg(long, value_name = "N")]
     spp: Option<u32>,
-    /// Seed of every random choice.
-    #[arg(long, value_name = "S", default_value_t = 0)]
-    seed: u64,
+    /// Seed of every random choice [default: 0].
+    #[arg(long, value_name = "S")]
+    seed: Option<u64>,
     /// Image resolution [default: the scene's; 512x512 for the Cornell box].
     #[arg(long, value_name = "WxH", allow_hyphen_values = true)]
     res: Option<String>,
@@ -102,14 +98,15 @@ pub struct RenderArgs {
     #[arg(long, short = 'o', value_name = "OUT")]
     output: Option<PathBuf>,
     /// Paper permutation threshold in [0,1] (samplers paper and paper-repro):
-    /// the probability that a generator-matrix column is left unflipped.
-    #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
-    threshold: f64,
+    /// the probability that a generator-matrix column is left unflipped
+    /// [default: 0.5].
+    #[arg(long, value_name = "T")]
+    threshold: Option<f64>,
     /// Let the paper permutation act on the film dimensions 0-1 too;
-    /// `--paper-all-dims` alone means true.
-    #[arg(long, value_name = "BOOL", default_value_t = false, num_args = 0..=1,
-          default_missing_value = "true", require_equals = true, action = clap::ArgAction::Set)]
-    paper_all_dims: bool,
+    /// `--paper-all-dims` alone means true [default: false].
+    #[arg(long, value_name = "BOOL", num_args = 0..=1,
+          default_missing_value = "true", require_equals = true)]
+    paper_all_dims: Option<bool>,
     /// Largest memory (MiB) of the film and its image.
     #[arg(long, value_name = "MIB", default_value_t = limits::DEFAULT_MAX_MEMORY_MIB)]
     max_memory: u64,
@@ -128,8 +125,8 @@ pub struct RenderArgs {
     /// MIS weight of the light leaving a coated (layered) material:
     /// `unbiased` (the default) or `pbrt-v4`, pbrt-v4's reverse-density
     /// weight, which is brighter and matches pbrt-v4's images.
-    #[arg(long, value_enum, value_name = "WEIGHT", default_value_t = LayeredWeight::Unbiased)]
-    layered_weight: LayeredWeight,
+    #[arg(long, value_enum, value_name = "WEIGHT")]
+    layered_weight: Option<LayeredWeight>,
     /// Print rays traced, rays/s, BVH statistics and time per phase.
     #[arg(long)]
     stats: bool,
@@ -138,45 +135,23 @@ pub struct RenderArgs {
     quiet: bool,
 }
 
-/// A validated `render` invocation.
+/// A `render` invocation, its flags' settings checked.
 #[derive(Debug, Clone)]
 pub struct RenderConfig {
     /// Scene file, or `None` for the Cornell box.
     pub scene: Option<PathBuf>,
-    /// Resolution override.
-    pub resolution: Option<[u32; 2]>,
-    /// Sampler override.
-    pub sampler: Option<SamplerName>,
-    /// Samples-per-pixel override.
-    pub spp: Option<u32>,
-    /// Maximum-depth override.
-    pub max_depth: Option<u32>,
-    /// Seed of every random choice.
-    pub seed: u64,
-    /// Worker threads (`None`: all cores).
-    pub threads: Option<usize>,
+    /// The settings the flags give (resolved over the scene's).
+    pub settings: SettingsLayer,
     /// Environment map replacing the scene's.
     pub envmap: Option<PathBuf>,
     /// Output file override.
     pub output: Option<PathBuf>,
-    /// Paper permutation threshold.
-    pub threshold: f64,
-    /// Paper permutation on the film dimensions too.
-    pub paper_all_dims: bool,
     /// Print statistics.
     pub stats: bool,
     /// Suppress progress and warnings.
     pub quiet: bool,
     /// Memory limit (MiB) of the film.
     pub max_memory: u64,
-    /// The pixels to render (`--pixel-bounds`).
-    pub window: Option<PixelBounds>,
-    /// The sample indices to take (`--sample-range`).
-    pub samples: Option<SampleRange>,
-    /// Spectral rendering instead of RGB.
-    pub spectral: bool,
-    /// The layered materials' exit MIS weight.
-    pub layered_weight: LayeredExitWeight,
 }
 
 /// `--layered-weight`: which MIS weight layered BSDFs use for the walk's
@@ -203,20 +178,15 @@ impl LayeredWeight {
 impl RenderConfig {
     /// True when the render writes a part (a window or a sample range).
     pub fn is_part(&self) -> bool {
-        self.window.is_some() || self.samples.is_some()
+        self.settings.window.is_some() || self.settings.samples.is_some()
     }
 }
 
 impl RenderArgs {
     /// Checks every argument and builds the configuration.
     pub fn into_config(self) -> Result<RenderConfig> {
-        let sampler = self
-            .sampler
-            .as_deref()
-            .map(parse::sampler_name)
-            .transpose()?;
-        self.check_ranges()?;
-        let resolution = self.res.as_deref().map(resolution).transpose()?;
+        let settings = self.settings()?;
+        Settings::resolve(&[&settings])?;
         if self.envmap.is_some() && self.scene.is_none() {
             bail!("--envmap applies to scene files; the built-in Cornell box has no environment");
         }
@@ -231,97 +201,57 @@ impl RenderArgs {
         }
         Ok(RenderConfig {
             scene: self.scene,
-            resolution,
-            sampler,
-            spp: self.spp,
-            max_depth: self.maxdepth,
-            seed: self.seed,
-            threads: self.threads,
+            settings,
             envmap: self.envmap,
             output: self.output,
-            threshold: self.threshold,
-            paper_all_dims: self.paper_all_dims,
             stats: self.stats,
             quiet: self.quiet,
             max_memory: self.max_memory,
-            window: self
-                .pixel_bounds
-                .as_deref()
-                .map(parse::pixel_bounds)
-                .transpose()?,
-            samples: self
-                .sample_range
-                .as_deref()
-                .map(parse::sample_range)
-                .transpose()?,
-            spectral: self.spectral,
-            layered_weight: self.layered_weight.exit_weight(),
+        })
+    }
+
+    /// The settings the flags give, each naming its flag.
+    fn settings(&self) -> Result<SettingsLayer> {
+        let weight = self.layered_weight.map(LayeredWeight::exit_weight);
+        Ok(SettingsLayer {
+            sampler: flag("--sampler", &self.sampler, parse::sampler_name)?,
+            spp: Given::maybe(self.spp, "--spp"),
+            seed: Given::maybe(self.seed, "--seed"),
+            threshold: Given::maybe(self.threshold, "--threshold"),
+            paper_all_dims: Given::maybe(self.paper_all_dims, "--paper-all-dims"),
+            max_depth: Given::maybe(self.maxdepth, "--maxdepth"),
+            layered_exit_weight: Given::maybe(weight, "--layered-weight"),
+            resolution: flag("--res", &self.res, parse::resolution)?,
+            threads: Given::maybe(self.threads, "--threads"),
+            tile_size: None,
+            window: flag("--pixel-bounds", &self.pixel_bounds, parse::pixel_bounds)?,
+            samples: flag("--sample-range", &self.sample_range, parse::sample_range)?,
+            spectral: self.spectral.then(|| Given::new(true, "--spectral")),
         })
     }
 }
 
-impl RenderArgs {
-    /// Checks `--spp`, `--maxdepth`, `--threads` and `--threshold` with
-    /// [`RenderOptions::validate`] (the one definition of their ranges), each
-    /// on the default options, so that the error names the flag.
-    fn check_ranges(&self) -> Result<()> {
-        let base = RenderOptions::default();
-        let check =
-            |flag: &str, opts: RenderOptions| opts.validate().map_err(|e| anyhow!("{flag}: {e}"));
-        let sampler = |spp: u32, threshold: f64| RenderOptions {
-            sampler: SamplerConfig {
-                spp,
-                threshold,
-                ..base.sampler
-            },
-            ..base
-        };
-        if let Some(spp) = self.spp {
-            check("--spp", sampler(spp, base.sampler.threshold))?;
-        }
-        check("--threshold", sampler(base.sampler.spp, self.threshold))?;
-        if let Some(max_depth) = self.maxdepth {
-            let integrator = PathIntegrator {
-                max_depth,
-                ..base.integrator
-            };
-            check("--maxdepth", RenderOptions { integrator, ..base })?;
-        }
-        if self.threads.is_some() {
-            check(
-                "--threads",
-                RenderOptions {
-                    threads: self.threads,
-                    ..base
-                },
-            )?;
-        }
-        Ok(())
-    }
-}
-
-/// `WxH` with both sides in `1..=MAX_SIDE` and at most `MAX_PIXELS` pixels.
-fn resolution(text: &str) -> Result<[u32; 2]> {
-    let res = parse::resolution(text)?;
-    if res[0] > MAX_SIDE || res[1] > MAX_SIDE || u64::from(res[0]) * u64::from(res[1]) > MAX_PIXELS
-    {
-        bail!("--res `{text}` is too large: each side must be at most {MAX_SIDE} pixels");
-    }
-    Ok(res)
+/// The value of `name`'s `text`, parsed by `parse`, if given.
+fn flag<T>(
+    name: &str,
+    text: &Option<String>,
+    parse: impl Fn(&str) -> Result<T>,
+) -> Result<Option<Given<T>>> {
+    Ok(Given::maybe(text.as_deref().map(parse).transpose()?, name))
 }
 
 /// Loads (or builds) the scene, renders it and writes the image.
 pub fn run(config: &RenderConfig) -> Result<()> {
     let t0 = Instant::now();
     let mut seen = HashSet::new();
-    let (scene, options, output) = prepare(config, &mut seen)?;
+    let (scene, view, options, output) = prepare(config, &mut seen)?;
     let mut phases = Phases {
         load: t0.elapsed(),
         ..Phases::default()
     };
 
     let reporter = Reporter::new(config.quiet);
-    let [w, h] = scene.film().params.resolution;
+    let [w, h] = view.resolution();
     let pixels = options
         .window
         .map_or(u64::from(w) * u64::from(h), |b| b.area() as u64);
@@ -333,7 +263,7 @@ pub fn run(config: &RenderConfig) -> Result<()> {
     reporter.begin_stage(&title, total, "samples");
     let on_progress = |p: Progress| reporter.advance_stage(p.samples_done);
     let t1 = Instant::now();
-    let out = render(&scene, &options, &on_progress)?;
+    let out = render(&scene, &view, &options, &on_progress)?;
     phases.render = t1.elapsed();
     reporter.end_stage();
     for w in &out.warnings {
@@ -341,10 +271,9 @@ pub fn run(config: &RenderConfig) -> Result<()> {
     }
     let t2 = Instant::now();
     if config.is_part() {
-        split_cmd::write_render_part(&output, &scene, &options, &out)?;
+        split_cmd::write_render_part(&output, &scene, &view, &options, &out)?;
     } else {
-        out.film
-            .write(&output, scene.film().exposure)
+        out.write(&output, view.exposure())
             .with_context(|| format!("cannot write `{}`", output.display()))?;
     }
     phases.write = t2.elapsed();

@@ -1,19 +1,19 @@
-//! Building a render: the scene (a file or the Cornell box), the options
-//! from the scene's settings and then the command line's overrides, the
-//! output file and its checks, and the warnings printed once.
+//! Building a render: the scene (a file or the Cornell box) and its view,
+//! the settings resolved from the scene's and then the command line's,
+//! the output file and its checks, and the warnings printed once.
 
 use std::collections::HashSet;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use lowdisc::catalog::{SamplerConfig, SamplerName};
-use lowdisc_render::cornell::cornell_box;
+use lowdisc_render::cornell::{CORNELL_RESOLUTION, cornell_scene};
 use lowdisc_render::film::PEAK_BYTES_PER_PIXEL;
-use lowdisc_render::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
-use lowdisc_render::render::{MAX_SPP, RenderOptions};
+use lowdisc_render::render::RenderOptions;
 use lowdisc_render::scene::Scene;
+use lowdisc_render::settings::{Given, Settings, SettingsLayer};
+use lowdisc_render::view::{View, ViewSpec};
 
 use super::RenderConfig;
 use crate::{default_output, limits};
@@ -54,78 +54,24 @@ pub(super) fn warn_once(seen: &mut HashSet<String>, quiet: bool, warning: &str) 
     }
 }
 
-/// The scene, its render options and the output file, after applying the
-/// scene file's settings and then the command line's overrides.
+/// The output file when neither the command line nor the scene names one.
+const DEFAULT_OUTPUT: &str = "render.exr";
+
+/// The scene, its view, the render options and the output file, after
+/// resolving the scene's settings and then the command line's.
 pub(super) fn prepare(
     config: &RenderConfig,
     seen: &mut HashSet<String>,
-) -> Result<(Scene, RenderOptions, PathBuf)> {
-    let mut sampler = SamplerName::ZSobol;
-    let mut spp = 16;
-    let mut max_depth = 5;
-    let mut output = default_output::path("render.exr");
-    let scene = match &config.scene {
-        None => cornell_box(config.resolution.unwrap_or([512, 512]))?,
-        Some(path) => {
-            let options = LoadOptions {
-                envmap_override: config.envmap.clone(),
-            };
-            let loaded = load_pbrt_scene(path, &options)
-                .with_context(|| format!("cannot load scene `{}`", path.display()))?;
-            for w in &loaded.warnings {
-                warn_once(seen, config.quiet, w);
-            }
-            let s = &loaded.settings;
-            sampler = s.sampler.unwrap_or(sampler);
-            spp = s.spp.unwrap_or(spp);
-            max_depth = s.max_depth.unwrap_or(max_depth);
-            // The scene's values obey the limits of the flags that override them.
-            if config.spp.is_none() && !(1..=MAX_SPP).contains(&spp) {
-                bail!(
-                    "{}: pixelsamples {spp} must be between 1 and {MAX_SPP} (the --spp limit)",
-                    path.display()
-                );
-            }
-            if config.max_depth.is_none() && max_depth > MAX_DEPTH_LIMIT {
-                bail!(
-                    "{}: maxdepth {max_depth} must be at most {MAX_DEPTH_LIMIT} (the --maxdepth limit)",
-                    path.display()
-                );
-            }
-            if let Some(name) = &s.output {
-                output = default_output::path(scene_output(name));
-            }
-            loaded.scene
-        }
-    };
-    let mut scene = scene;
-    if let Some(r) = config.resolution {
-        scene.set_resolution(r)?;
-    }
-    let options = RenderOptions {
-        sampler: SamplerConfig {
-            seed: config.seed,
-            spp: config.spp.unwrap_or(spp),
-            threshold: config.threshold,
-            paper_all_dims: config.paper_all_dims,
-            ..SamplerConfig::new(config.sampler.unwrap_or(sampler))
-        },
-        integrator: PathIntegrator {
-            max_depth: config.max_depth.unwrap_or(max_depth),
-            layered_exit_weight: config.layered_weight,
-            ..PathIntegrator::default()
-        },
-        threads: config.threads,
-        tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
-        window: config.window,
-        samples: config.samples,
-        spectral: config.spectral,
-    };
+) -> Result<(Scene, View, RenderOptions, PathBuf)> {
+    let (scene, spec, layer, output) = load(config, seen)?;
+    let settings = Settings::resolve(&[&layer, &config.settings])?;
+    let view = View::new(&spec, settings.resolution)?;
+    // Without -o the image goes to out/ (created).
     let output = match &config.output {
         Some(given) => given.clone(),
         None => {
             default_output::create_dir()?;
-            output
+            default_output::path(output)
         }
     };
     check_output(&output)?;
@@ -136,13 +82,43 @@ pub(super) fn prepare(
         );
     }
     // A part allocates its window alone.
-    let [w, h] = match config.window {
+    let [w, h] = match settings.render.window {
         Some(b) => [b.width() as u32, b.height() as u32],
-        None => scene.film().params.resolution,
+        None => settings.resolution,
     };
     let bytes = f64::from(w) * f64::from(h) * PEAK_BYTES_PER_PIXEL as f64;
     limits::check_memory(&format!("a {w}x{h} film"), bytes, config.max_memory)?;
-    Ok((scene, options, output))
+    Ok((scene, view, settings.render, output))
+}
+
+/// The scene, its view, the settings it asks for and its output file: a
+/// scene file's, or the built-in Cornell box's.
+fn load(
+    config: &RenderConfig,
+    seen: &mut HashSet<String>,
+) -> Result<(Scene, ViewSpec, SettingsLayer, PathBuf)> {
+    let Some(path) = &config.scene else {
+        let (scene, spec) = cornell_scene()?;
+        let layer = SettingsLayer {
+            resolution: Some(Given::new(CORNELL_RESOLUTION, "the Cornell box")),
+            ..SettingsLayer::default()
+        };
+        return Ok((scene, spec, layer, PathBuf::from(DEFAULT_OUTPUT)));
+    };
+    let options = LoadOptions {
+        envmap_override: config.envmap.clone(),
+    };
+    let loaded = load_pbrt_scene(path, &options)
+        .with_context(|| format!("cannot load scene `{}`", path.display()))?;
+    for w in &loaded.warnings {
+        warn_once(seen, config.quiet, w);
+    }
+    let output = loaded
+        .settings
+        .output
+        .as_deref()
+        .map_or_else(|| PathBuf::from(DEFAULT_OUTPUT), scene_output);
+    Ok((loaded.scene, loaded.view, loaded.settings.layer, output))
 }
 
 /// The file name a scene's `Film` filename asks for (written to
@@ -151,7 +127,7 @@ pub(super) fn prepare(
 fn scene_output(name: &str) -> PathBuf {
     let file = Path::new(name)
         .file_name()
-        .map_or_else(|| PathBuf::from("render.exr"), PathBuf::from);
+        .map_or_else(|| PathBuf::from(DEFAULT_OUTPUT), PathBuf::from);
     let ext = file
         .extension()
         .and_then(|e| e.to_str())

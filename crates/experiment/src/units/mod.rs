@@ -15,9 +15,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
-use lowdisc_render::film::Film;
 use lowdisc_render::render::render;
-use lowdisc_render::scene::Scene;
 use lowdisc_split::RenderPart;
 
 use crate::assemble::{Rendered, UnitOutput, UnitSource};
@@ -25,30 +23,26 @@ use crate::config::ExperimentConfig;
 use crate::plan::Unit;
 use crate::plan::file::PlanFile;
 use crate::progress::{Progress, Stage};
-use crate::run::load;
+use crate::run::{Subject, load};
 use lock::{Lock, host_name, unix_now};
 use store::{Record, Store};
 
-/// Renders `unit` of the experiment `config` with `scene` (whose content
-/// hashes to `scene_hash`), first set to the unit's resolution, reporting
+/// Renders `unit` of the experiment `config` with `subject` (whose content
+/// hashes to `scene_hash`), its view built at the unit's resolution, reporting
 /// its samples to `stage`. A piece of a cut render renders its band's
 /// pixels over its sample range and keeps their sums.
 pub fn render_unit(
     config: &ExperimentConfig,
-    scene: &mut Scene,
+    subject: &Subject,
     scene_hash: u64,
     unit: &Unit,
     stage: &Stage,
 ) -> Result<UnitOutput> {
-    let resolution = unit.resolution(config);
-    if scene.film().params.resolution != resolution {
-        scene.set_resolution(resolution)?;
-    }
+    let view = subject.view_at(unit.resolution(config))?;
     let mut options = unit.options(config);
     let keeps_sums = unit.work.keeps_sums();
     if keeps_sums {
-        let bounds = Film::checked_bounds(&scene.film().params)?;
-        let window = unit.work.piece().window(bounds);
+        let window = unit.work.piece().window(view.pixel_bounds());
         if window.area() == 0 {
             // Bands are counted on the resolution; a crop window may hold
             // fewer rows of tiles.
@@ -60,16 +54,11 @@ pub fn render_unit(
         }
         options.window = Some(window);
     }
-    let out = render(scene, &options, stage)?;
+    let out = render(&subject.scene, &view, &options, stage)?;
     stage.finished_render(out.stats.samples);
     let rendered = if keeps_sums {
         let name = format!("{scene_hash:016x}");
-        Rendered::Sums(RenderPart::of_render(
-            name,
-            &scene.film().params,
-            &options,
-            &out,
-        )?)
+        Rendered::Sums(RenderPart::of_render(name, &view, &options, &out))
     } else {
         Rendered::Image(out.image)
     };
@@ -83,15 +72,15 @@ pub fn render_unit(
 pub struct InProcess<'a> {
     /// The experiment.
     pub config: &'a ExperimentConfig,
-    /// Its scene, loaded at the experiment's resolution.
-    pub scene: &'a mut Scene,
+    /// Its scene and view.
+    pub subject: &'a Subject,
     /// The hash of the scene's content.
     pub scene_hash: u64,
 }
 
 impl UnitSource for InProcess<'_> {
     fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput> {
-        render_unit(self.config, self.scene, self.scene_hash, unit, stage)
+        render_unit(self.config, self.subject, self.scene_hash, unit, stage)
     }
 }
 
@@ -167,13 +156,13 @@ pub fn planned_scene(
     plan: &PlanFile,
     threads: Option<usize>,
     observer: &dyn Progress,
-) -> Result<(ExperimentConfig, Scene)> {
+) -> Result<(ExperimentConfig, Subject)> {
     let mut config = plan.loading_config();
     config.threads = threads.or(config.threads);
     config.validate()?;
-    let (scene, hash) = load(&config, observer)?;
+    let (subject, hash) = load(&config, observer)?;
     check_scene(plan, hash)?;
-    Ok((config, scene))
+    Ok((config, subject))
 }
 
 /// Loads the plan's scene, renders `unit` and writes its file and record.
@@ -185,11 +174,11 @@ fn render_and_write(
     observer: &dyn Progress,
 ) -> Result<Record> {
     let start = Instant::now();
-    let (config, mut scene) = planned_scene(plan, threads, observer)?;
+    let (config, subject) = planned_scene(plan, threads, observer)?;
     let title = format!("unit {}: {}", unit.index, unit.work.describe());
     let stage = Stage::begin(observer, &title, unit.samples(&config));
     let hash = plan.plan.scene_hash;
-    let out = render_unit(&config, &mut scene, hash, unit, &stage)?;
+    let out = render_unit(&config, &subject, hash, unit, &stage)?;
     stage.end();
     let record = Record {
         format: store::FORMAT.into(),

@@ -51,6 +51,16 @@ impl LayeredExitWeight {
     /// pbrt-v4's reverse density `pdf(-w, wi)`: biased, for comparisons
     /// with pbrt-v4's images.
     pub const PBRT_V4: LayeredExitWeight = LayeredExitWeight(1);
+
+    /// The weight's name, as the command line's `--layered-weight` takes it:
+    /// `unbiased` or `pbrt-v4`.
+    pub fn name(self) -> &'static str {
+        if self == LayeredExitWeight::PBRT_V4 {
+            "pbrt-v4"
+        } else {
+            "unbiased"
+        }
+    }
 }
 
 /// A dielectric coating over a base BxDF `B`.

@@ -99,7 +99,7 @@ pub struct FilmParams {
     /// `maxcomponentvalue` (default infinite: no clamping).
     pub max_component_value: f32,
     /// `whitebalance`: 0 (the default) for none, otherwise the colour
-    /// temperature (K) adapted to the output's white; spectral mode only.
+    /// temperature (K) whose daylight white becomes the output's white.
     pub white_balance: f32,
     /// `filename` (default `pbrt.exr`).
     pub filename: String,
@@ -240,8 +240,10 @@ pub struct Film {
     full_resolution: [u32; 2],
     filename: String,
     acc: Accumulator,
-    /// Spectral mode: the matrix from the accumulated sensor XYZ to sRGB.
-    output_from_sensor: Option<[[f32; 3]; 3]>,
+    /// The matrix from the accumulated values to the output (spectral
+    /// mode's sensor XYZ, or a white balance; see
+    /// [`crate::spectrum::sensor::output_matrix`]).
+    output: Option<[[f32; 3]; 3]>,
 }
 
 impl Film {
@@ -307,13 +309,19 @@ impl Film {
         if let Some(w) = window {
             bounds = w.intersect(&bounds);
         }
+        Ok(Film::with_bounds(params, bounds))
+    }
+
+    /// A film of `params` that stores the pixels of `bounds`, which the
+    /// caller took from [`Film::checked_bounds`] (a view's, checked once).
+    pub fn with_bounds(params: &FilmParams, bounds: PixelBounds) -> Film {
         let ratio = params.exposure_time * params.iso / 100.0;
-        Ok(Film {
+        Film {
             full_resolution: params.resolution,
             filename: params.filename.clone(),
             acc: Accumulator::new(bounds, ratio, params.max_component_value),
-            output_from_sensor: None,
-        })
+            output: None,
+        }
     }
 
     /// The full image resolution (what the camera projects onto).
@@ -397,16 +405,17 @@ impl Film {
             .map(|i| Rgb::from_array(self.value(i)))
     }
 
-    /// Spectral mode: samples are the sensor's XYZ and pixels are `m · XYZ`
-    /// (`None`, the default: samples are the output RGB).
-    pub fn set_output_from_sensor(&mut self, m: Option<[[f32; 3]; 3]>) {
-        self.output_from_sensor = m;
+    /// Pixels are `m · v` for the accumulated value `v` (the sensor's XYZ
+    /// in spectral mode, or RGB to white-balance); `None`, the default: the
+    /// accumulated values are the output RGB.
+    pub fn set_output_matrix(&mut self, m: Option<[[f32; 3]; 3]>) {
+        self.output = m;
     }
 
     /// Pixel `i`'s output value.
     fn value(&self, i: usize) -> [f32; 3] {
         let v = self.acc.value(i);
-        match &self.output_from_sensor {
+        match &self.output {
             None => v,
             Some(m) => crate::spectrum::sensor::sensor_to_output(m, v),
         }

@@ -91,9 +91,6 @@ impl Default for PathIntegrator {
     }
 }
 
-/// The largest `max_depth` accepted (pbrt scenes use up to a few hundred).
-pub const MAX_DEPTH_LIMIT: u32 = 10_000;
-
 /// Sampler dimensions consumed at each scattering vertex.
 pub const DIMS_PER_BOUNCE: u32 = 7;
 

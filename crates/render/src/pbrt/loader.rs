@@ -5,13 +5,14 @@
 use super::state::{MatRef, StateStack, pbrt_matrix};
 use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;
-use crate::camera::PerspectiveParams;
 use crate::error::RenderError;
-use crate::film::{Film, FilmParams};
+use crate::film::FilmParams;
 use crate::filter::Filter;
 use crate::math::Transform;
-use crate::scene::{CameraSpec, FilmSettings, SceneBuilder};
+use crate::scene::SceneBuilder;
+use crate::settings::Given;
 use crate::texture::TextureRegistry;
+use crate::view::{CameraSpec, ViewSpec};
 use pbrt_format::{
     Directive, FileKind, Loc, ParamSet, ParseError, ParserTarget, TargetResult, Warnings,
 };
@@ -74,10 +75,7 @@ impl PbrtLoader {
             builder: SceneBuilder::new(),
             warnings: Warnings::new(),
             state: StateStack::default(),
-            settings: SceneSettings {
-                resolution: FilmParams::default().resolution,
-                ..SceneSettings::default()
-            },
+            settings: SceneSettings::default(),
             counts: SceneCounts::default(),
             camera: None,
             film: FilmParams::default(),
@@ -125,17 +123,14 @@ impl PbrtLoader {
             self.warnings
                 .warn_global("ObjectBegin without ObjectEnd at end of file");
         }
-        let camera = match self.camera.take() {
-            Some(c) => c,
+        let mut view = ViewSpec::pbrt_default();
+        match self.camera.take() {
+            Some(c) => view.camera = c,
             None => {
-                self.warnings
-                    .warn_global("the scene has no Camera; using pbrt's default camera");
-                CameraSpec {
-                    world_from_camera: Transform::IDENTITY,
-                    params: PerspectiveParams::default(),
-                }
+                let w = "the scene has no Camera; using pbrt's default camera";
+                self.warnings.warn_global(w);
             }
-        };
+        }
         if let Some(env) = &self.options.envmap_override
             && !self.envmap_used
         {
@@ -149,24 +144,20 @@ impl PbrtLoader {
             self.warnings
                 .warn_global("the scene has no lights; it will render black");
         }
-        // Camera and film errors name the directive's file:line:column.
-        let at = |loc: &Option<Loc>, what: String| {
-            let place = loc.as_ref().map(|l| format!("{l}: ")).unwrap_or_default();
-            RenderError::InvalidScene(format!("{place}{what}"))
-        };
-        Film::checked_bounds(&self.film).map_err(|e| at(&self.film_loc, e.to_string()))?;
-        self.builder.set_camera(camera);
-        self.builder.set_film(FilmSettings {
-            params: self.film.clone(),
-            filter: self.filter.clone(),
-            exposure: 1.0,
-        });
-        let scene = self.builder.build().map_err(|e| match e {
-            RenderError::Camera(e) => at(&self.camera_loc, format!("Camera: {e}")),
-            e => e,
-        })?;
+        // The view's errors (built at the resolved resolution) name the
+        // directive's file:line:column.
+        view.film = self.film;
+        view.filter = self.filter;
+        view.camera_at = self.camera_loc.as_ref().map(ToString::to_string);
+        view.film_at = self.film_loc.as_ref().map(ToString::to_string);
+        if let Some(at) = &view.film_at {
+            let resolution = Given::new(view.film.resolution, format!("{at}: Film"));
+            self.settings.layer.resolution = Some(resolution);
+        }
+        let scene = self.builder.build()?;
         Ok(LoadedScene {
             scene,
+            view,
             warnings: self.warnings.iter().map(ToString::to_string).collect(),
             settings: self.settings,
             counts: self.counts,

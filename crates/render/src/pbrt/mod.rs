@@ -1,11 +1,13 @@
 //! pbrt-v4 scene loading: a [`pbrt_format::ParserTarget`] that keeps pbrt's
 //! graphics state and builds a [`Scene`] with a [`SceneBuilder`](crate::scene::SceneBuilder).
 //!
-//! Entry point: [`load_pbrt_scene`]. It returns the scene, the warnings (one
+//! Entry point: [`load_pbrt_scene`]. It returns the scene, its view (the
+//! `Camera`, `Film` and `PixelFilter`, a [`ViewSpec`]), the warnings (one
 //! per unsupported directive or parameter, with `file:line:column`) and the
 //! rendering settings the scene file asks for ([`SceneSettings`]: sampler,
-//! samples per pixel, maximum depth, output file), which the caller may
-//! override.
+//! samples per pixel, maximum depth and resolution as a
+//! [`SettingsLayer`], each naming its directive; the output file), which
+//! the caller may override ([`crate::settings::Settings::resolve`]).
 //!
 //! What is approximated (each with a warning where it applies):
 //! * textures are evaluated at each shading point without filtering beyond
@@ -34,7 +36,8 @@ mod state;
 use crate::bsdf::Material;
 use crate::error::RenderError;
 use crate::scene::Scene;
-use lowdisc::catalog::SamplerName;
+use crate::settings::SettingsLayer;
+use crate::view::{View, ViewSpec};
 use std::path::{Path, PathBuf};
 
 pub use loader::PbrtLoader;
@@ -51,27 +54,26 @@ pub struct LoadOptions {
 /// `Film`). `None` means the file does not say.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SceneSettings {
-    /// `"integer pixelsamples"` of the `Sampler`.
-    pub spp: Option<u32>,
-    /// The lowdisc sampler the `Sampler` type maps to.
-    pub sampler: Option<SamplerName>,
+    /// The settings for [`crate::settings::Settings::resolve`]: the
+    /// lowdisc sampler the `Sampler` type maps to, its sample count
+    /// (`pixelsamples`, or `xsamples * ysamples` of `stratified`), the
+    /// `Integrator`'s `maxdepth` and the `Film`'s resolution.
+    pub layer: SettingsLayer,
     /// The `Sampler` type as written.
     pub sampler_type: Option<String>,
-    /// `"integer maxdepth"` of the `Integrator` (pbrt's default is 5).
-    pub max_depth: Option<u32>,
     /// The `Integrator` type as written.
     pub integrator: Option<String>,
-    /// Film resolution (pbrt's default 1280x720 when not given).
-    pub resolution: [u32; 2],
     /// `"string filename"` of the `Film`, if given.
     pub output: Option<String>,
 }
 
-/// A loaded scene with its warnings and settings.
+/// A loaded scene with its view, warnings and settings.
 #[derive(Clone, Debug)]
 pub struct LoadedScene {
     /// The scene.
     pub scene: Scene,
+    /// How the file sees it: `Camera`, `Film` and `PixelFilter`.
+    pub view: ViewSpec,
     /// Warnings, each formatted as `file:line:column: warning: message`.
     pub warnings: Vec<String>,
     /// The settings the file asks for.
@@ -113,10 +115,12 @@ pub fn load_pbrt_scene(path: &Path, options: &LoadOptions) -> Result<LoadedScene
     loader.finish()
 }
 
-/// Loads a pbrt-v4 scene file with default [`LoadOptions`], dropping its
-/// warnings and settings (use [`load_pbrt_scene`] to get them).
-pub fn load_scene_file(path: &Path) -> Result<Scene, RenderError> {
-    load_pbrt_scene(path, &LoadOptions::default()).map(|l| l.scene)
+/// Loads a pbrt-v4 scene file with default [`LoadOptions`] and builds its
+/// view at the file's own resolution, dropping its warnings and settings
+/// (use [`load_pbrt_scene`] to get them).
+pub fn load_scene_file(path: &Path) -> Result<(Scene, View), RenderError> {
+    let loaded = load_pbrt_scene(path, &LoadOptions::default())?;
+    Ok((loaded.scene, View::native(&loaded.view)?))
 }
 
 /// A material for a `measured` BSDF file: [`Material::measured_fallback`].

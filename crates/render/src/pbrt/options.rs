@@ -4,7 +4,8 @@
 use super::loader::PbrtLoader;
 use crate::camera::PerspectiveParams;
 use crate::filter::{Filter, FilterParams};
-use crate::scene::CameraSpec;
+use crate::settings::Given;
+use crate::view::CameraSpec;
 use lowdisc::catalog::SamplerName;
 use pbrt_format::{Loc, ParamSet, ParseError};
 
@@ -83,7 +84,6 @@ impl PbrtLoader {
         let w = resolution_value(ps.int_or("xresolution", w as i64), "xresolution", loc)?;
         let h = resolution_value(ps.int_or("yresolution", h as i64), "yresolution", loc)?;
         self.film.resolution = [w, h];
-        self.settings.resolution = [w, h];
         if let Some(f) = ps.get_string("filename") {
             self.film.filename = f.to_string();
             self.settings.output = Some(f.to_string());
@@ -103,7 +103,17 @@ impl PbrtLoader {
                 format!("Film sensor \"{s}\" is not supported; using cie1931"),
             );
         }
-        for p in ["diagonal", "savefp16", "whitebalance"] {
+        let white_balance = ps.float_or("whitebalance", 0.0);
+        if !(white_balance >= 0.0 && white_balance.is_finite()) {
+            return Err(ParseError::scene(
+                loc,
+                format!(
+                    "Film: whitebalance {white_balance} must be 0 (none) or a temperature in kelvin"
+                ),
+            ));
+        }
+        self.film.white_balance = white_balance as f32;
+        for p in ["diagonal", "savefp16"] {
             ps.mark_used(p);
         }
         ps.finish(&format!("Film \"{ty}\""), &mut self.warnings)?;
@@ -118,13 +128,13 @@ impl PbrtLoader {
         loc: &Loc,
     ) -> Result<(), ParseError> {
         let rand = ps.get_string("randomization").map(str::to_string);
+        // Without a count the settings' default applies (pbrt's, 16).
         let spp = if ty == "stratified" {
-            let x = ps.int_or("xsamples", 4);
-            let y = ps.int_or("ysamples", 4);
             ps.mark_used("jitter");
-            x.saturating_mul(y)
+            let (x, y) = (ps.get_int("xsamples"), ps.get_int("ysamples"));
+            (x.is_some() || y.is_some()).then(|| x.unwrap_or(4).saturating_mul(y.unwrap_or(4)))
         } else {
-            ps.int_or("pixelsamples", 16)
+            ps.get_int("pixelsamples")
         };
         let name = match (ty, rand.as_deref()) {
             ("halton", Some("owen") | Some("fastowen")) => SamplerName::HaltonOwen,
@@ -153,11 +163,14 @@ impl PbrtLoader {
                 "Sampler \"seed\" is ignored; the renderer's --seed applies",
             );
         }
-        match u32::try_from(spp).ok().filter(|&n| n > 0) {
-            Some(n) => self.settings.spp = Some(n),
-            None => self.warn(loc, format!("Sampler: invalid sample count {spp}; ignored")),
+        let at = format!("{loc}: Sampler \"{ty}\"");
+        if let Some(spp) = spp {
+            match u32::try_from(spp).ok().filter(|&n| n > 0) {
+                Some(n) => self.settings.layer.spp = Some(Given::new(n, at.clone())),
+                None => self.warn(loc, format!("Sampler: invalid sample count {spp}; ignored")),
+            }
         }
-        self.settings.sampler = Some(name);
+        self.settings.layer.sampler = Some(Given::new(name, at));
         self.settings.sampler_type = Some(ty.to_string());
         ps.finish(&format!("Sampler \"{ty}\""), &mut self.warnings)
     }
@@ -180,10 +193,15 @@ impl PbrtLoader {
                 format!("Integrator \"{other}\" is not available; rendering with the path tracer"),
             ),
         }
-        let depth = ps.int_or("maxdepth", 5);
-        match u32::try_from(depth) {
-            Ok(d) => self.settings.max_depth = Some(d),
-            Err(_) => self.warn(loc, format!("Integrator: maxdepth {depth} < 0; ignored")),
+        // Without "maxdepth" the settings' default applies (pbrt's, 5).
+        if let Some(depth) = ps.get_int("maxdepth") {
+            match u32::try_from(depth) {
+                Ok(d) => {
+                    let at = format!("{loc}: Integrator \"maxdepth\"");
+                    self.settings.layer.max_depth = Some(Given::new(d, at));
+                }
+                Err(_) => self.warn(loc, format!("Integrator: maxdepth {depth} < 0; ignored")),
+            }
         }
         for p in ["regularize", "lightsampler"] {
             if ps.find(p).is_some() {

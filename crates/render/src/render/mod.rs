@@ -3,8 +3,8 @@
 //!
 //! **Determinism.** Tile `k` (row-major order over the film's pixel bounds)
 //! gets its own copy of the pixel sampler, `sampler.with_stream(k)`, and its
-//! own [`FilmTile`] of the scene's [`Film`]; a tile's
-//! result depends only on the scene, the options and `k`, and tiles are merged
+//! own [`FilmTile`] of the view's [`Film`]; a tile's
+//! result depends only on the scene, the view, the options and `k`, and tiles are merged
 //! in order. The image and every counter are therefore bit-identical whatever
 //! the number of threads.
 //!
@@ -36,17 +36,17 @@
 //! **Progress** goes through a [`ProgressSink`] (any `Fn(Progress) + Sync`
 //! closure): the library itself never prints.
 
-mod options;
-
 pub use crate::error::RenderError;
-pub use options::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE, RenderOptions, SampleRange};
+pub use crate::settings::ranges::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE};
+pub use crate::settings::{RenderOptions, SampleRange};
 
 use crate::camera::camera_sample;
-use crate::film::{Film, FilmError, FilmParams, FilmTile, PixelBounds, PixelSum};
+use crate::film::{Film, FilmError, FilmTile, PixelBounds, PixelSum};
 use crate::integrator::{PathIntegrator, PathStats};
 use crate::scene::Scene;
-use crate::spectrum::sensor::{output_from_sensor, sample_xyz};
+use crate::spectrum::sensor::{output_matrix, sample_xyz};
 use crate::spectrum::{Rgb, SampledSpectrum, SampledWavelengths};
+use crate::view::View;
 use lowdisc::catalog::SamplerConfig;
 use lowdisc::pixel::{PixelSampler, Sampler};
 use rayon::prelude::*;
@@ -115,7 +115,7 @@ impl RenderStats {
 /// film's pixel bounds) and the render's counters.
 #[derive(Clone, Debug)]
 pub struct RenderOutput {
-    /// The film with every tile merged (write it with [`Film::write`]).
+    /// The film with every tile merged (its pixel sums).
     pub film: Film,
     /// The film's pixel values.
     pub image: lowdisc_image::RgbImage,
@@ -126,6 +126,14 @@ pub struct RenderOutput {
 }
 
 impl RenderOutput {
+    /// Writes [`Self::image`], choosing the format by extension: `.exr`
+    /// (linear float), `.png` (8-bit sRGB after multiplying by `exposure`),
+    /// `.pfm`, `.hdr`.
+    pub fn write(&self, path: impl AsRef<std::path::Path>, exposure: f32) -> Result<(), FilmError> {
+        let options = lowdisc_image::WriteOptions { exposure };
+        Ok(lowdisc_image::write_image(path, &self.image, &options)?)
+    }
+
     /// Mean of every pixel, per channel.
     pub fn mean(&self) -> [f64; 3] {
         let mut m = [0.0f64; 3];
@@ -146,20 +154,21 @@ struct TileResult {
     samples: u64,
 }
 
-/// Renders `scene` with `opts`, reporting progress to `progress`.
+/// Renders `scene` seen through `view` with `opts`, reporting progress to
+/// `progress`.
 pub fn render(
     scene: &Scene,
+    view: &View,
     opts: &RenderOptions,
     progress: &dyn ProgressSink,
 ) -> Result<RenderOutput, RenderError> {
     opts.validate()?;
-    let params = &scene.film().params;
-    let full = Film::checked_bounds(params).map_err(RenderError::Film)?;
+    let full = view.pixel_bounds();
     let window = opts.window_in(full)?;
     let range = opts.sample_range();
-    let mut film = output_film(params, window, opts.spectral).map_err(RenderError::Film)?;
+    let mut film = output_film(view, window, opts.spectral);
     let sampler = SamplerConfig {
-        resolution: film.full_resolution(),
+        resolution: view.resolution(),
         ..opts.sampler
     }
     .build()?;
@@ -185,7 +194,7 @@ pub fn render(
         rects
             .par_iter()
             .map(|&(k, rect)| {
-                let r = render_tile(scene, opts, &sampler, k, rect, film.tile(rect));
+                let r = render_tile(scene, view, opts, &sampler, k, rect, film.tile(rect));
                 total.finished(&r, progress);
                 r
             })
@@ -228,32 +237,27 @@ pub fn render(
 }
 
 /// The empty film a render accumulates into: the pixels of `window` inside
-/// the film of `params`, whose output is sRGB from the sensor's XYZ when
-/// `spectral`.
-pub fn output_film(
-    params: &FilmParams,
-    window: PixelBounds,
-    spectral: bool,
-) -> Result<Film, FilmError> {
-    let mut film = Film::with_window(params, Some(window))?;
-    if spectral {
-        film.set_output_from_sensor(Some(output_from_sensor(params.white_balance)));
-    }
-    Ok(film)
+/// the view's film, whose output is sRGB from the sensor's XYZ when
+/// `spectral`, white-balanced as the film asks.
+pub fn output_film(view: &View, window: PixelBounds, spectral: bool) -> Film {
+    let params = view.film();
+    let mut film = Film::with_bounds(params, view.pixel_bounds().intersect(&window));
+    film.set_output_matrix(output_matrix(spectral, params.white_balance));
+    film
 }
 
-/// The image that a render (spectral or not) of `window` of the film of
-/// `params` whose pixel sums are `sums` (row-major over the window) gives:
+/// The image that a render (spectral or not) of `window` of the view's
+/// film whose pixel sums are `sums` (row-major over the window) gives:
 /// the same values as that render's own image. Merged sums of a split
 /// render's parts become the merged image through it.
 pub fn image_of_sums(
-    params: &FilmParams,
+    view: &View,
     window: PixelBounds,
     spectral: bool,
     sums: &[PixelSum],
 ) -> Result<lowdisc_image::RgbImage, FilmError> {
     // A window reaching outside the film keeps fewer pixels than `sums`.
-    let mut film = output_film(params, window, spectral)?;
+    let mut film = output_film(view, window, spectral);
     film.set_sums(sums)?;
     film.to_image()
 }
@@ -292,6 +296,7 @@ impl Totals {
 /// are the same either way.
 fn render_tile(
     scene: &Scene,
+    view: &View,
     opts: &RenderOptions,
     sampler: &Sampler,
     k: u64,
@@ -300,9 +305,9 @@ fn render_tile(
 ) -> TileResult {
     let replay = sampler.is_order_dependent();
     match sampler.with_stream(k) {
-        Sampler::ZSobol(s) => render_tile_with(scene, opts, s, replay, rect, film),
-        Sampler::Independent(s) => render_tile_with(scene, opts, s, replay, rect, film),
-        other => render_tile_with(scene, opts, other, replay, rect, film),
+        Sampler::ZSobol(s) => render_tile_with(scene, view, opts, s, replay, rect, film),
+        Sampler::Independent(s) => render_tile_with(scene, view, opts, s, replay, rect, film),
+        other => render_tile_with(scene, view, opts, other, replay, rect, film),
     }
 }
 
@@ -310,6 +315,7 @@ fn render_tile(
 /// [`Sampler::is_order_dependent`].
 fn render_tile_with<S: PixelSampler>(
     scene: &Scene,
+    view: &View,
     opts: &RenderOptions,
     mut sampler: S,
     replay: bool,
@@ -317,7 +323,12 @@ fn render_tile_with<S: PixelSampler>(
     mut film: FilmTile,
 ) -> TileResult {
     let mut stats = PathStats::default();
-    let (integrator, seed) = (&opts.integrator, opts.sampler.seed);
+    let shot = Shot {
+        scene,
+        view,
+        integrator: &opts.integrator,
+        seed: opts.sampler.seed,
+    };
     let (kept, range) = (film.bounds(), opts.sample_range());
     let (pixels, indices) = if replay {
         (rect, SampleRange::all(opts.sampler.spp))
@@ -333,9 +344,9 @@ fn render_tile_with<S: PixelSampler>(
                 break;
             }
             let (l, weight) = if opts.spectral {
-                trace_spectral_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats)
+                trace_spectral_sample(&shot, &mut sampler, pixel, s, &mut stats)
             } else {
-                trace_camera_sample(scene, integrator, &mut sampler, pixel, s, seed, &mut stats)
+                trace_camera_sample(&shot, &mut sampler, pixel, s, &mut stats)
             };
             if keep_pixel && range.contains(s) {
                 film.add_sample(pixel, l, weight);
@@ -353,28 +364,40 @@ fn render_tile_with<S: PixelSampler>(
     }
 }
 
+/// What every camera sample of a render reads: the scene, the view, the
+/// path tracer and the seed of the BSDFs' random walks.
+#[derive(Clone, Copy, Debug)]
+pub struct Shot<'a> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// The camera, film and filter.
+    pub view: &'a View,
+    /// The path tracer.
+    pub integrator: &'a PathIntegrator,
+    /// The seed of the BSDFs' random walks (the sampler's seed).
+    pub seed: u64,
+}
+
 /// One camera sample, the path of every sample from the sampler to the film:
 /// starts sample `index` of `pixel` at dimension 0, draws the film position
 /// (`get_pixel_2d`) and the lens (`get_2d`), turns them into a camera ray
 /// through the pixel filter's importance sampling, and traces it with
-/// `integrator` (whose vertices draw [`crate::integrator::DIMS_PER_BOUNCE`]
-/// dimensions each). Returns the radiance and the filter weight the film
-/// adds it with.
+/// the shot's integrator (whose vertices draw
+/// [`crate::integrator::DIMS_PER_BOUNCE`] dimensions each). Returns the
+/// radiance and the filter weight the film adds it with.
 pub fn trace_camera_sample<S: PixelSampler>(
-    scene: &Scene,
-    integrator: &PathIntegrator,
+    shot: &Shot<'_>,
     sampler: &mut S,
     pixel: [i32; 2],
     index: u32,
-    bsdf_seed: u64,
     stats: &mut PathStats,
 ) -> (Rgb, f32) {
     sampler.start_pixel_sample([pixel[0] as u32, pixel[1] as u32], index, 0);
     let u_film = sampler.get_pixel_2d();
     let u_lens = sampler.get_2d();
-    let cs = camera_sample(&scene.film().filter, pixel, u_film, u_lens);
-    let ray = scene.camera().generate_ray_for(&cs);
-    let l = integrator.li(scene, ray, sampler, bsdf_seed, stats);
+    let cs = camera_sample(shot.view.filter(), pixel, u_film, u_lens);
+    let ray = shot.view.camera().generate_ray_for(&cs);
+    let l = (shot.integrator).li(shot.scene, ray, sampler, shot.seed, stats);
     (l, cs.filter_weight)
 }
 
@@ -383,12 +406,10 @@ pub fn trace_camera_sample<S: PixelSampler>(
 /// and the lens (dimensions 1-2), traces the four wavelengths together and
 /// returns the sensor's XYZ (in an [`Rgb`]'s fields) and the filter weight.
 pub fn trace_spectral_sample<S: PixelSampler>(
-    scene: &Scene,
-    integrator: &PathIntegrator,
+    shot: &Shot<'_>,
     sampler: &mut S,
     pixel: [i32; 2],
     index: u32,
-    bsdf_seed: u64,
     stats: &mut PathStats,
 ) -> (Rgb, f32) {
     sampler.start_pixel_sample([pixel[0] as u32, pixel[1] as u32], index, 0);
@@ -396,8 +417,9 @@ pub fn trace_spectral_sample<S: PixelSampler>(
     let u_film = sampler.get_pixel_2d();
     let u_lens = sampler.get_2d();
     let lambda = SampledWavelengths::sample_visible(u_lambda);
-    let cs = camera_sample(&scene.film().filter, pixel, u_film, u_lens);
-    let ray = scene.camera().generate_ray_for(&cs);
-    let l: SampledSpectrum = integrator.li_for(scene, ray, sampler, bsdf_seed, &lambda, stats);
+    let cs = camera_sample(shot.view.filter(), pixel, u_film, u_lens);
+    let ray = shot.view.camera().generate_ray_for(&cs);
+    let (scene, seed) = (shot.scene, shot.seed);
+    let l: SampledSpectrum = (shot.integrator).li_for(scene, ray, sampler, seed, &lambda, stats);
     (sample_xyz(l, &lambda), cs.filter_weight)
 }

@@ -1,6 +1,7 @@
 //! The renderable scene: shapes in a BVH with a material (and optionally an
-//! area light) per shape, the lights with their power-proportional sampler,
-//! the camera and the film settings.
+//! area light) per shape, and the lights with their power-proportional
+//! sampler. How the scene is seen (camera, film, filter) is apart, in
+//! [`crate::view`].
 //!
 //! Scenes are put together with a [`SceneBuilder`] (the built-in Cornell box
 //! in [`crate::cornell`], and the pbrt-v4 scene loader) and are immutable
@@ -15,13 +16,10 @@
 use crate::accel::{Accel, Hit};
 use crate::bsdf::Material;
 use crate::bvh::BvhStats;
-use crate::camera::{PerspectiveCamera, PerspectiveParams};
 use crate::error::RenderError;
-use crate::film::FilmParams;
-use crate::filter::Filter;
 use crate::geometry::{Disk, Prim, ShapeSet, Sphere, TriangleMesh};
 use crate::light::{DiffuseAreaLight, Light, LightSampler, LightType};
-use crate::math::{Bounds3, Ray, Transform};
+use crate::math::{Bounds3, Ray};
 use crate::spectrum::Rgb;
 use crate::spectrum::named::EmissionSpectrum;
 
@@ -34,42 +32,6 @@ pub struct Emission {
     pub two_sided: bool,
 }
 
-/// Where the camera is and how it projects.
-#[derive(Clone, Debug)]
-pub struct CameraSpec {
-    /// World-from-camera transform (pbrt's camera space: looks down +z, y up).
-    pub world_from_camera: Transform,
-    /// Perspective parameters.
-    pub params: PerspectiveParams,
-}
-
-/// Film settings: pbrt's `Film` parameters (resolution, crop, sensor), the
-/// pixel filter, and the exposure applied when writing PNG.
-#[derive(Clone, Debug, Default)]
-pub struct FilmSettings {
-    /// The film's parameters.
-    pub params: FilmParams,
-    /// Pixel filter (importance-sampled by the pixel dimensions).
-    pub filter: Filter,
-    /// Factor applied to radiance when writing 8-bit output.
-    pub exposure: f32,
-}
-
-impl FilmSettings {
-    /// Settings for a `resolution` image with `filter`, exposure 1, and
-    /// otherwise pbrt's defaults.
-    pub fn new(resolution: [u32; 2], filter: Filter) -> Self {
-        FilmSettings {
-            params: FilmParams {
-                resolution,
-                ..FilmParams::default()
-            },
-            filter,
-            exposure: 1.0,
-        }
-    }
-}
-
 /// Per-shape data: material index and the index of its first area light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct ShapeInfo {
@@ -78,7 +40,7 @@ struct ShapeInfo {
     first_light: Option<u32>,
 }
 
-/// Collects shapes, materials, lights and camera, then builds a [`Scene`].
+/// Collects shapes, materials and lights, then builds a [`Scene`].
 #[derive(Clone, Debug, Default)]
 pub struct SceneBuilder {
     shapes: ShapeSet,
@@ -88,8 +50,6 @@ pub struct SceneBuilder {
     materials: Vec<Material>,
     lights: Vec<(Light, Option<EmissionSpectrum>)>,
     emission_spectrum: Option<EmissionSpectrum>,
-    camera: Option<CameraSpec>,
-    film: FilmSettings,
 }
 
 impl SceneBuilder {
@@ -130,27 +90,11 @@ impl SceneBuilder {
     pub fn set_emission_spectrum(&mut self, s: Option<EmissionSpectrum>) {
         self.emission_spectrum = s;
     }
-    /// Sets the camera.
-    pub fn set_camera(&mut self, c: CameraSpec) {
-        self.camera = Some(c);
-    }
-    /// Sets the film settings.
-    pub fn set_film(&mut self, f: FilmSettings) {
-        self.film = f;
-    }
 
     /// Validates indices and emission, builds the BVH, the area lights and
     /// the light sampler.
     pub fn build(self) -> Result<Scene, RenderError> {
         let nmat = self.materials.len() as u32;
-        let camera_spec = self
-            .camera
-            .ok_or_else(|| RenderError::InvalidScene("the scene has no camera".into()))?;
-        let camera = PerspectiveCamera::new(
-            camera_spec.world_from_camera,
-            self.film.params.resolution,
-            &camera_spec.params,
-        )?;
         let accel = Accel::build(self.shapes);
         let shapes = accel.shapes();
         let mut lights = Vec::new();
@@ -213,9 +157,6 @@ impl SceneBuilder {
             light_spectra,
             infinite_lights,
             light_sampler,
-            camera_spec,
-            camera,
-            film: self.film,
         })
     }
 }
@@ -243,9 +184,6 @@ pub struct Scene {
     light_spectra: Vec<Option<EmissionSpectrum>>,
     infinite_lights: Vec<usize>,
     light_sampler: LightSampler,
-    camera_spec: CameraSpec,
-    camera: PerspectiveCamera,
-    film: FilmSettings,
 }
 
 impl Scene {
@@ -316,31 +254,23 @@ impl Scene {
     pub fn light_sampler(&self) -> &LightSampler {
         &self.light_sampler
     }
-    /// The camera.
-    pub fn camera(&self) -> &PerspectiveCamera {
-        &self.camera
-    }
-    /// The film settings.
-    pub fn film(&self) -> &FilmSettings {
-        &self.film
-    }
-    /// Writes, in `Debug` form, everything that determines the scene's
-    /// pixels: shapes, materials, lights, the camera and the film. The
+    /// Writes, in `Debug` form, everything of the scene that determines
+    /// its pixels: shapes, materials, lights and their emission spectra
+    /// (the camera and the film are the view's, [`crate::view`]). The
     /// acceleration structure (derived from the shapes, and carrying its
     /// build time) is left out, so two loads of one scene write the same
     /// text: the input of a content hash.
     pub fn write_content(&self, out: &mut dyn std::fmt::Write) -> std::fmt::Result {
         write!(
             out,
-            "{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}",
+            "{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}",
             self.accel.shapes(),
             self.materials,
             self.mesh_info,
             self.sphere_info,
             self.disk_info,
             self.lights,
-            self.camera_spec,
-            self.film
+            self.light_spectra
         )
     }
     /// World bounds of the geometry.
@@ -354,16 +284,5 @@ impl Scene {
     /// Total number of primitives.
     pub fn prim_count(&self) -> usize {
         self.accel.shapes().prim_count()
-    }
-
-    /// Changes the film resolution (the camera is rebuilt for it).
-    pub fn set_resolution(&mut self, resolution: [u32; 2]) -> Result<(), RenderError> {
-        self.camera = PerspectiveCamera::new(
-            self.camera_spec.world_from_camera,
-            resolution,
-            &self.camera_spec.params,
-        )?;
-        self.film.params.resolution = resolution;
-        Ok(())
     }
 }

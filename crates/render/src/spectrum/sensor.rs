@@ -7,7 +7,13 @@
 //!
 //! * `whitebalance` 0 (the default): `sRGB ← XYZ` only, no adaptation;
 //! * `whitebalance` `T` > 0: first the von Kries (Bradford) adaptation from
-//!   the white of the CIE daylight illuminant `D(T)` to sRGB's D65 white.
+//!   the white of the CIE daylight illuminant `D(T)` to sRGB's D65 white
+//!   (pbrt-v4's `PixelSensor` for `cie1931`).
+//!
+//! RGB mode accumulates linear sRGB; with `whitebalance` `T` > 0 its pixels
+//! are taken through XYZ and the same adaptation (`sRGB ← WB ← XYZ ← sRGB`),
+//! so that a balanced render is the unbalanced one times that matrix, as in
+//! pbrt-v4. [`output_matrix`] is the one place that chooses the matrix.
 //!
 //! The matching functions are the CIE 1931 2° tables (not an analytic fit).
 
@@ -40,12 +46,44 @@ pub fn sample_xyz(l: SampledSpectrum, w: &SampledWavelengths) -> Rgb {
 pub fn output_from_sensor(white_balance_kelvin: f32) -> [[f32; 3]; 3] {
     let to_rgb = srgb().rgb_from_xyz;
     if white_balance_kelvin > 0.0 {
-        let d = daylight(white_balance_kelvin);
-        let src = chromaticity(spectrum_to_xyz(|l| d.eval(l))).map(f64::from);
+        let src = daylight_white(white_balance_kelvin);
         to_rgb.mul(&white_balance(src, srgb().white)).to_f32()
     } else {
         to_rgb.to_f32()
     }
+}
+
+/// The matrix from linear sRGB to the white-balanced output (RGB mode),
+/// `None` for `white_balance_kelvin` 0: the pixels are the output.
+pub fn output_from_rgb(white_balance_kelvin: f32) -> Option<[[f32; 3]; 3]> {
+    (white_balance_kelvin > 0.0).then(|| {
+        let s = srgb();
+        s.rgb_from_xyz
+            .mul(&white_balance(
+                daylight_white(white_balance_kelvin),
+                s.white,
+            ))
+            .mul(&s.xyz_from_rgb)
+            .to_f32()
+    })
+}
+
+/// The matrix a film applies to its pixels' values to give the output:
+/// from the sensor's XYZ in spectral mode ([`output_from_sensor`]), from
+/// RGB with a white balance otherwise ([`output_from_rgb`]); `None` when
+/// the values are the output.
+pub fn output_matrix(spectral: bool, white_balance_kelvin: f32) -> Option<[[f32; 3]; 3]> {
+    if spectral {
+        Some(output_from_sensor(white_balance_kelvin))
+    } else {
+        output_from_rgb(white_balance_kelvin)
+    }
+}
+
+/// The chromaticity of the CIE daylight illuminant `D(T)`.
+fn daylight_white(kelvin: f32) -> [f64; 2] {
+    let d = daylight(kelvin);
+    chromaticity(spectrum_to_xyz(|l| d.eval(l))).map(f64::from)
 }
 
 /// A pixel's output value from its sensor value `v` (XYZ) and the matrix

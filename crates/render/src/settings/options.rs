@@ -1,34 +1,22 @@
 //! [`RenderOptions`]: what to render with (the pixel sampler's configuration,
 //! the path tracer, threads, tiles, and the part of the image and of the
-//! sample indices to render) and the one place their ranges are checked
-//! ([`RenderOptions::validate`]; the window is checked against the film by
-//! [`RenderOptions::window_in`]).
-//!
-//! The sampler's own fields (samples per pixel at least 1, the paper
-//! threshold in `[0, 1]`) are checked by [`SamplerConfig::validate`]; this
-//! module adds the renderer's bounds (at most [`MAX_SPP`] samples per pixel,
-//! [`MAX_DEPTH_LIMIT`] bounces, [`MAX_THREADS`] threads, tiles of at most
-//! [`MAX_TILE_SIZE`] pixels). Front ends call `validate` on the options they
-//! built; [`super::render`] calls it again before any work.
+//! sample indices to render), their defaults ([`RenderOptions::default`],
+//! the one place they are declared) and [`RenderOptions::validate`], which
+//! checks every field with [`super::ranges`] (the window is checked against
+//! the film by [`RenderOptions::window_in`]).
 
-use super::RenderError;
+use super::ranges;
+use crate::error::RenderError;
 use crate::film::PixelBounds;
-use crate::integrator::{MAX_DEPTH_LIMIT, PathIntegrator};
+use crate::integrator::PathIntegrator;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
-
-/// The most samples per pixel accepted.
-pub const MAX_SPP: u32 = 1 << 24;
-/// The most worker threads accepted.
-pub const MAX_THREADS: usize = 1024;
-/// The largest tile side accepted.
-pub const MAX_TILE_SIZE: u32 = 4096;
 
 /// How to render.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderOptions {
     /// The pixel sampler: name, seed, samples per pixel, paper threshold.
     /// Its `seed` also seeds the BSDFs' random walks; its `resolution` is
-    /// not used (the render takes the film's full resolution).
+    /// not used (the render takes the view's resolution).
     pub sampler: SamplerConfig,
     /// The path tracer.
     pub integrator: PathIntegrator,
@@ -119,44 +107,18 @@ impl RenderOptions {
         }
     }
 
-    /// Checks every field's range; the error names the field.
+    /// Checks every field's range with [`super::ranges`] (options resolved
+    /// by [`super::Settings::resolve`] already passed these checks, with
+    /// their sources named).
     pub fn validate(&self) -> Result<(), RenderError> {
-        let bad = |m: String| Err(RenderError::InvalidOptions(m));
-        self.sampler.validate()?;
-        if self.sampler.spp > MAX_SPP {
-            return bad(format!(
-                "samples per pixel {} must be between 1 and {MAX_SPP}",
-                self.sampler.spp
-            ));
-        }
-        if self.integrator.max_depth > MAX_DEPTH_LIMIT {
-            return bad(format!(
-                "max depth {} exceeds {MAX_DEPTH_LIMIT}",
-                self.integrator.max_depth
-            ));
-        }
-        if self.tile_size == 0 || self.tile_size > MAX_TILE_SIZE {
-            return bad(format!(
-                "tile size {} must be between 1 and {MAX_TILE_SIZE}",
-                self.tile_size
-            ));
-        }
-        if let Some(r) = self.samples {
-            if r.is_empty() || r.end > self.sampler.spp {
-                return bad(format!(
-                    "sample range {r} must be non-empty and within 0..{}",
-                    self.sampler.spp
-                ));
-            }
-        }
-        if let Some(t) = self.threads {
-            if t == 0 || t > MAX_THREADS {
-                return bad(format!(
-                    "thread count {t} must be between 1 and {MAX_THREADS}"
-                ));
-            }
-        }
-        Ok(())
+        let s = &self.sampler;
+        ranges::spp(s.spp)
+            .and_then(|()| ranges::threshold(s.threshold))
+            .and_then(|()| ranges::max_depth(self.integrator.max_depth))
+            .and_then(|()| ranges::tile_size(self.tile_size))
+            .and_then(|()| self.samples.map_or(Ok(()), |r| ranges::samples(r, s.spp)))
+            .and_then(|()| self.threads.map_or(Ok(()), ranges::threads))
+            .map_err(RenderError::InvalidOptions)
     }
 
     /// The sample indices every pixel takes: [`Self::samples`] or `0..spp`.
