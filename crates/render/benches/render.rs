@@ -58,6 +58,7 @@ fn bmw(c: &mut Criterion) {
     }
     let options = LoadOptions {
         envmap_override: Some(dir.join("envmaps/pbrt-v4-ganesha-sky-equiarea.exr")),
+        ..LoadOptions::default()
     };
     let mut scene = match load_pbrt_scene(&file, &options) {
         Ok(loaded) => loaded.scene,

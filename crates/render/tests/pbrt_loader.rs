@@ -12,10 +12,23 @@ fn temp_dir(name: &str) -> PathBuf {
 }
 
 fn load_text(name: &str, text: &str) -> Result<LoadedScene, String> {
+    load_text_with(name, text, &LoadOptions::default())
+}
+
+/// [`load_text`] with `--approximate`: missing features become warnings.
+fn load_approximate(name: &str, text: &str) -> Result<LoadedScene, String> {
+    let options = LoadOptions {
+        approximate: true,
+        ..LoadOptions::default()
+    };
+    load_text_with(name, text, &options)
+}
+
+fn load_text_with(name: &str, text: &str, options: &LoadOptions) -> Result<LoadedScene, String> {
     let d = temp_dir(name);
     let p = d.join("scene.pbrt");
     std::fs::write(&p, text).unwrap();
-    load_pbrt_scene(&p, &LoadOptions::default()).map_err(|e| e.to_string())
+    load_pbrt_scene(&p, options).map_err(|e| e.to_string())
 }
 
 const CAMERA: &str = "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\nFilm \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n";
@@ -69,15 +82,20 @@ fn bad_radius_is_an_error() {
 }
 
 #[test]
-fn unknown_material_and_parameter_warn_with_location() {
+fn unknown_material_is_an_error_and_unused_parameters_warn_with_location() {
     let scene = format!(
         "{CAMERA}Material \"velvet\"\nShape \"sphere\" \"float radius\" 1 \"float bogus\" 2\nLightSource \"point\"\n"
     );
-    let l = load_text("warn", &scene).unwrap();
+    let e = load_text("unknown", &scene).unwrap_err();
     assert!(
-        l.warnings
-            .iter()
-            .any(|w| w.contains(":5:") && w.contains("unknown material type \"velvet\"")),
+        e.contains("scene.pbrt:5:1: material \"velvet\" is not supported")
+            && e.contains("--approximate"),
+        "{e}"
+    );
+    let l = load_approximate("warn", &scene).unwrap();
+    assert!(
+        l.warnings.iter().any(|w| w.contains(":5:")
+            && w.contains("material \"velvet\" is not supported; a diffuse material is used")),
         "{:?}",
         l.warnings
     );
@@ -169,7 +187,9 @@ fn interface_mix_and_measured_materials() {
          Material \"measured\" \"string filename\" \"x.bsdf\"\nShape \"sphere\"\n\
          Material \"interface\"\nShape \"sphere\"\n"
     );
-    let l = load_text("mats", &scene).unwrap();
+    let e = load_text("mats", &scene).unwrap_err();
+    assert!(e.contains("scene.pbrt:11:1: material \"measured\""), "{e}");
+    let l = load_approximate("mats", &scene).unwrap();
     // The interface sphere is skipped; the mix is not counted as a material.
     assert_eq!((l.counts.spheres, l.counts.materials), (2, 3));
     let mats = l.scene.materials();
@@ -184,7 +204,10 @@ fn interface_mix_and_measured_materials() {
         "{:?}",
         mats[2]
     );
-    for what in ["measured material", "interface"] {
+    for what in [
+        "material \"measured\" (\"x.bsdf\") is not supported",
+        "interface",
+    ] {
         assert!(
             l.warnings.iter().any(|w| w.contains(what)),
             "{what}: {:?}",

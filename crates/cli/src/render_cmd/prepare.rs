@@ -69,6 +69,7 @@ pub(super) fn prepare(
         Some(path) => {
             let options = LoadOptions {
                 envmap_override: config.envmap.clone(),
+                approximate: config.approximate,
             };
             let loaded = load_pbrt_scene(path, &options)
                 .with_context(|| format!("cannot load scene `{}`", path.display()))?;

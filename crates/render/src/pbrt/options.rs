@@ -35,10 +35,8 @@ impl PbrtLoader {
         let world_from_camera = camera_from_world.inverse();
         self.state.named.insert("camera".into(), world_from_camera);
         if ty != "perspective" {
-            self.warn(
-                loc,
-                format!("Camera \"{ty}\" is not supported; using a perspective camera"),
-            );
+            let what = format!("Camera \"{ty}\"");
+            self.approximated(loc, &what, "a perspective camera is used")?;
         }
         let d = PerspectiveParams::default();
         let params = PerspectiveParams {
@@ -73,11 +71,17 @@ impl PbrtLoader {
         loc: &Loc,
     ) -> Result<(), ParseError> {
         self.film_loc = Some(loc.clone());
-        if ty != "rgb" {
-            self.warn(
+        match ty {
+            "rgb" => {}
+            // Their RGB channels are the "rgb" film's image.
+            "gbuffer" | "spectral" => self.warn(
                 loc,
-                format!("Film \"{ty}\" is not supported; using \"rgb\""),
-            );
+                format!("Film \"{ty}\": only the RGB image is written, as by Film \"rgb\""),
+            ),
+            _ => {
+                let what = format!("Film \"{ty}\"");
+                self.approximated(loc, &what, "Film \"rgb\" is used")?;
+            }
         }
         let [w, h] = self.film.resolution;
         let w = resolution_value(ps.int_or("xresolution", w as i64), "xresolution", loc)?;
@@ -98,12 +102,16 @@ impl PbrtLoader {
         if let Some(s) = ps.get_string("sensor")
             && s != "cie1931"
         {
-            self.warn(
-                loc,
-                format!("Film sensor \"{s}\" is not supported; using cie1931"),
-            );
+            let what = format!("Film sensor \"{s}\"");
+            self.approximated(loc, &what, "the cie1931 sensor is used")?;
         }
-        for p in ["diagonal", "savefp16", "whitebalance"] {
+        // pbrt-v4's default 0 means no white balancing for the cie1931 sensor.
+        if ps.float_or("whitebalance", 0.0) != 0.0 {
+            self.approximated(loc, "Film \"whitebalance\"", "no white balance")?;
+        }
+        // The diagonal only matters for the realistic camera; half floats
+        // only change the file's precision.
+        for p in ["diagonal", "savefp16"] {
             ps.mark_used(p);
         }
         ps.finish(&format!("Film \"{ty}\""), &mut self.warnings)?;
@@ -169,28 +177,31 @@ impl PbrtLoader {
         ps: &ParamSet,
         loc: &Loc,
     ) -> Result<(), ParseError> {
-        match ty {
-            "path" => {}
-            "volpath" => self.warn(
-                loc,
-                "Integrator \"volpath\": rendering with the path tracer; media are ignored",
-            ),
-            other => self.warn(
-                loc,
-                format!("Integrator \"{other}\" is not available; rendering with the path tracer"),
-            ),
+        // Without participating media pbrt-v4's "volpath" computes what
+        // "path" computes; a medium it would scatter in is an error at its
+        // `MediumInterface`.
+        if !matches!(ty, "path" | "volpath") {
+            let what = format!("Integrator \"{ty}\"");
+            self.approximated(loc, &what, "rendered by the path tracer")?;
+            // The other integrator's own parameters mean nothing here.
+            for p in ps {
+                if !matches!(p.name.as_str(), "maxdepth" | "regularize" | "lightsampler") {
+                    p.mark_used();
+                }
+            }
         }
         let depth = ps.int_or("maxdepth", 5);
         match u32::try_from(depth) {
             Ok(d) => self.settings.max_depth = Some(d),
             Err(_) => self.warn(loc, format!("Integrator: maxdepth {depth} < 0; ignored")),
         }
-        for p in ["regularize", "lightsampler"] {
-            if ps.find(p).is_some() {
-                ps.mark_used(p);
-                let what = format!("Integrator parameter \"{p}\"");
-                self.unsupported(loc, &what);
-            }
+        if ps.bool_or("regularize", false) {
+            self.approximated(loc, "Integrator \"regularize\"", "no regularization")?;
+        }
+        // The light sampler only changes the noise.
+        if ps.find("lightsampler").is_some() {
+            ps.mark_used("lightsampler");
+            self.unsupported(loc, "Integrator parameter \"lightsampler\"");
         }
         self.settings.integrator = Some(ty.to_string());
         ps.finish(&format!("Integrator \"{ty}\""), &mut self.warnings)
