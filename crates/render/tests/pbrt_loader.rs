@@ -343,3 +343,79 @@ fn an_emissive_mesh_with_a_degenerate_triangle_loads_and_that_triangle_emits_not
     assert!((powers[0] - expected).abs() < 1e-5 * expected, "{powers:?}");
     assert_eq!(powers[1], 0.0);
 }
+
+/// Directives and parameters whose effect lowdisc lacks: errors at their
+/// location naming them, warnings with `--approximate`; their harmless
+/// forms load without a word.
+#[test]
+fn missing_features_are_errors_and_their_harmless_forms_are_not() {
+    let light = "LightSource \"point\"\n";
+    // (text after the camera, the error's place and feature)
+    let missing = [
+        (
+            "Shape \"sphere\" \"float alpha\" 0.5\n",
+            ":5:16:",
+            "alpha cut-out",
+        ),
+        ("Shape \"cylinder\"\n", ":5:1:", "Shape \"cylinder\""),
+        (
+            "ActiveTransform EndTime\nTranslate 1 0 0\n",
+            ":5:1:",
+            "motion blur",
+        ),
+        (
+            "Attribute \"shape\" \"float radius\" 2\n",
+            ":5:1:",
+            "Attribute \"shape\"",
+        ),
+        (
+            "LightSource \"goniometric\"\n",
+            ":5:1:",
+            "LightSource \"goniometric\"",
+        ),
+        (
+            "Texture \"t\" \"float\" \"fbm\"\n",
+            ":5:1:",
+            "texture class \"fbm\"",
+        ),
+    ];
+    for (text, place, feature) in missing {
+        let scene = format!("{CAMERA}{text}{light}");
+        let e = load_text("missing", &scene).unwrap_err();
+        assert!(e.contains(place) && e.contains(feature), "{text}: {e}");
+        let l = load_approximate("missing", &scene).unwrap();
+        assert!(
+            l.warnings.iter().any(|w| w.contains(place)
+                && w.contains(feature)
+                && w.ends_with("(--approximate)")),
+            "{text}: {:?}",
+            l.warnings
+        );
+    }
+    let harmless = "Shape \"sphere\" \"float alpha\" 1\nActiveTransform All\nTranslate 1 0 0\n";
+    let l = load_text("harmless", &format!("{CAMERA}{harmless}{light}")).unwrap();
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    // Before WorldBegin: a colour space and an option that change the image.
+    for (before, feature) in [
+        ("ColorSpace \"aces2065-1\"\n", "ColorSpace \"aces2065-1\""),
+        (
+            "Option \"bool forcediffuse\" true\n",
+            "Option \"forcediffuse\"",
+        ),
+    ] {
+        let e = load_text("before", &format!("{before}{CAMERA}{light}")).unwrap_err();
+        assert!(e.contains("scene.pbrt:1:1:") && e.contains(feature), "{e}");
+    }
+    let off = load_text(
+        "off",
+        &format!("Option \"bool forcediffuse\" false\n{CAMERA}{light}"),
+    )
+    .unwrap();
+    assert!(
+        off.warnings
+            .iter()
+            .any(|w| w.contains("Option \"forcediffuse\" is not supported; ignored")),
+        "{:?}",
+        off.warnings
+    );
+}

@@ -71,7 +71,7 @@ impl PbrtLoader {
             ps.mark_used("portal");
             // pbrt-v4's portal light is dark behind the portal.
             let instead = "the light shines from every direction";
-            self.approximated(loc, "infinite light portals", instead)?;
+            self.approximated(loc, "infinite light portal", instead)?;
         }
         let file = ps.get_string("filename").map(|f| self.resolve(f));
         let path = match (self.options.envmap_override.clone(), file) {
@@ -196,7 +196,7 @@ impl PbrtLoader {
         }
         if ps.find("filename").is_some() {
             ps.mark_used("filename");
-            let what = "image area lights (AreaLightSource \"filename\")";
+            let what = "image area light (AreaLightSource \"filename\")";
             self.approximated(loc, what, "\"L\" is used")?;
         }
         let l = self.light_rgb(ps, "L", loc)?;

@@ -183,11 +183,11 @@ impl PbrtLoader {
             None | Some(FloatOrTexture::Value(1.0))
         );
         let missing = [
-            ("alpha", !opaque, "alpha cut-outs", "the shape is opaque"),
+            ("alpha", !opaque, "alpha cut-out", "the shape is opaque"),
             (
                 "emissionfilename",
                 true,
-                "image area lights",
+                "image area light",
                 "the light's \"L\" is used",
             ),
             (
