@@ -146,3 +146,57 @@ fn features_without_effect_on_the_pixels_are_warnings() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `lowdisc experiment` loads scene files the same way and takes
+/// `--approximate` too.
+#[test]
+fn experiment_refuses_missing_features_unless_approximate() {
+    let dir = temp_dir("features-experiment");
+    let file = scene(&dir, "bdpt.pbrt", "Integrator \"bdpt\"\n", "");
+    let run = |approximate: bool, out: &str| {
+        let out = dir.join(out).display().to_string();
+        let mut args = vec![
+            "experiment",
+            file.as_str(),
+            "--samplers",
+            "sobol",
+            "--runs",
+            "1",
+            "--spp",
+            "1",
+            "--res",
+            "8x6",
+            "--ref-spp",
+            "4",
+            "--conv-max",
+            "1",
+            "--conv-res",
+            "8x6",
+            "--conv-ref-spp",
+            "4",
+            "--quiet",
+            "--out",
+        ];
+        args.push(&out);
+        if approximate {
+            args.push("--approximate");
+        }
+        let r = lowdisc(&args);
+        (
+            r.status.success(),
+            String::from_utf8_lossy(&r.stderr).into_owned(),
+        )
+    };
+    let (ok, stderr) = run(false, "refused");
+    assert!(!ok, "{stderr}");
+    assert!(
+        stderr.starts_with("error: ")
+            && stderr.contains("bdpt.pbrt:3:1:")
+            && stderr.contains("Integrator \"bdpt\""),
+        "{stderr}"
+    );
+    let (ok, stderr) = run(true, "approximated");
+    assert!(ok, "{stderr}");
+    assert!(dir.join("approximated/results.json").is_file());
+    std::fs::remove_dir_all(&dir).ok();
+}
