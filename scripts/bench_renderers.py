@@ -224,7 +224,9 @@ def main():
             for name, render, _ in mitsuba:
                 times[name].append(render(run + 1))
             if have_bmw:
-                args = [bmw, "--envmap", a.envmap, "--res", a.bmw_res, "--spp", str(a.bmw_spp),
+                # --approximate: the scene asks for Integrator "regularize".
+                args = [bmw, "--approximate", "--envmap", a.envmap, "--res", a.bmw_res,
+                        "--spp", str(a.bmw_spp),
                         *ld_threads]
                 bmw_runs.append(lowdisc_run(a.lowdisc, args, out))
             for label, sampler, lowdisc_file, pbrt_file, spp in cases:

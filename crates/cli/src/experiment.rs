@@ -110,6 +110,11 @@ pub struct ExperimentArgs {
     /// often ship without their map) [default: none].
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
+    /// Render a scene file's pbrt-v4 features that lowdisc lacks (media,
+    /// curves, bump maps, other integrators, ...) approximately, each with a
+    /// warning, instead of refusing the scene.
+    #[arg(long)]
+    approximate: bool,
     /// Paper permutation threshold of the paper's samplers (renders and point figure).
     #[arg(long, value_name = "T", default_value_t = SamplerConfig::DEFAULT_THRESHOLD)]
     threshold: f64,
@@ -217,6 +222,7 @@ impl ExperimentArgs {
             conv_res,
             conv_ref_spp,
             envmap: self.envmap,
+            approximate: self.approximate,
             threshold: parse::threshold(self.threshold)?,
             max_depth: self
                 .maxdepth

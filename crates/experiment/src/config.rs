@@ -54,6 +54,10 @@ pub struct ExperimentConfig {
     pub conv_ref_spp: u32,
     /// Environment map.
     pub envmap: Option<PathBuf>,
+    /// Load a scene file that uses pbrt-v4 features lowdisc lacks, rendering
+    /// them approximately (`--approximate`; see
+    /// `lowdisc_render::pbrt::LoadOptions::approximate`).
+    pub approximate: bool,
     /// Paper threshold (renders of `paper`/`paper-repro` and the figure).
     pub threshold: f64,
     /// Maximum depth.

@@ -85,6 +85,7 @@ pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result
             hash = fnv1a(hash, &read(path)?);
             let options = LoadOptions {
                 envmap_override: config.envmap.clone(),
+                approximate: config.approximate,
             };
             let loaded = load_pbrt_scene(path, &options)
                 .with_context(|| format!("cannot load scene `{}`", path.display()))?;

@@ -59,6 +59,7 @@ fn bmw(c: &mut Criterion) {
     }
     let options = LoadOptions {
         envmap_override: Some(dir.join("envmaps/pbrt-v4-ganesha-sky-equiarea.exr")),
+        ..LoadOptions::default()
     };
     let loaded = load_pbrt_scene(&file, &options);
     match loaded.and_then(|l| Ok((View::new(&l.view, [128, 72])?, l.scene))) {

@@ -12,10 +12,23 @@ fn temp_dir(name: &str) -> PathBuf {
 }
 
 fn load_text(name: &str, text: &str) -> Result<LoadedScene, String> {
+    load_text_with(name, text, &LoadOptions::default())
+}
+
+/// [`load_text`] with `--approximate`: missing features become warnings.
+fn load_approximate(name: &str, text: &str) -> Result<LoadedScene, String> {
+    let options = LoadOptions {
+        approximate: true,
+        ..LoadOptions::default()
+    };
+    load_text_with(name, text, &options)
+}
+
+fn load_text_with(name: &str, text: &str, options: &LoadOptions) -> Result<LoadedScene, String> {
     let d = temp_dir(name);
     let p = d.join("scene.pbrt");
     std::fs::write(&p, text).unwrap();
-    load_pbrt_scene(&p, &LoadOptions::default()).map_err(|e| e.to_string())
+    load_pbrt_scene(&p, options).map_err(|e| e.to_string())
 }
 
 const CAMERA: &str = "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\nFilm \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n";
@@ -69,15 +82,20 @@ fn bad_radius_is_an_error() {
 }
 
 #[test]
-fn unknown_material_and_parameter_warn_with_location() {
+fn unknown_material_is_an_error_and_unused_parameters_warn_with_location() {
     let scene = format!(
         "{CAMERA}Material \"velvet\"\nShape \"sphere\" \"float radius\" 1 \"float bogus\" 2\nLightSource \"point\"\n"
     );
-    let l = load_text("warn", &scene).unwrap();
+    let e = load_text("unknown", &scene).unwrap_err();
     assert!(
-        l.warnings
-            .iter()
-            .any(|w| w.contains(":5:") && w.contains("unknown material type \"velvet\"")),
+        e.contains("scene.pbrt:5:1: material \"velvet\" is not supported")
+            && e.contains("--approximate"),
+        "{e}"
+    );
+    let l = load_approximate("warn", &scene).unwrap();
+    assert!(
+        l.warnings.iter().any(|w| w.contains(":5:")
+            && w.contains("material \"velvet\" is not supported; a diffuse material is used")),
         "{:?}",
         l.warnings
     );
@@ -169,7 +187,9 @@ fn interface_mix_and_measured_materials() {
          Material \"measured\" \"string filename\" \"x.bsdf\"\nShape \"sphere\"\n\
          Material \"interface\"\nShape \"sphere\"\n"
     );
-    let l = load_text("mats", &scene).unwrap();
+    let e = load_text("mats", &scene).unwrap_err();
+    assert!(e.contains("scene.pbrt:11:1: material \"measured\""), "{e}");
+    let l = load_approximate("mats", &scene).unwrap();
     // The interface sphere is skipped; the mix is not counted as a material.
     assert_eq!((l.counts.spheres, l.counts.materials), (2, 3));
     let mats = l.scene.materials();
@@ -184,7 +204,10 @@ fn interface_mix_and_measured_materials() {
         "{:?}",
         mats[2]
     );
-    for what in ["measured material", "interface"] {
+    for what in [
+        "material \"measured\" (\"x.bsdf\") is not supported",
+        "interface",
+    ] {
         assert!(
             l.warnings.iter().any(|w| w.contains(what)),
             "{what}: {:?}",
@@ -319,4 +342,80 @@ fn an_emissive_mesh_with_a_degenerate_triangle_loads_and_that_triangle_emits_not
     let expected = 2.0 * std::f32::consts::PI * 0.5;
     assert!((powers[0] - expected).abs() < 1e-5 * expected, "{powers:?}");
     assert_eq!(powers[1], 0.0);
+}
+
+/// Directives and parameters whose effect lowdisc lacks: errors at their
+/// location naming them, warnings with `--approximate`; their harmless
+/// forms load without a word.
+#[test]
+fn missing_features_are_errors_and_their_harmless_forms_are_not() {
+    let light = "LightSource \"point\"\n";
+    // (text after the camera, the error's place and feature)
+    let missing = [
+        (
+            "Shape \"sphere\" \"float alpha\" 0.5\n",
+            ":5:16:",
+            "alpha cut-out",
+        ),
+        ("Shape \"cylinder\"\n", ":5:1:", "Shape \"cylinder\""),
+        (
+            "ActiveTransform EndTime\nTranslate 1 0 0\n",
+            ":5:1:",
+            "motion blur",
+        ),
+        (
+            "Attribute \"shape\" \"float radius\" 2\n",
+            ":5:1:",
+            "Attribute \"shape\"",
+        ),
+        (
+            "LightSource \"goniometric\"\n",
+            ":5:1:",
+            "LightSource \"goniometric\"",
+        ),
+        (
+            "Texture \"t\" \"float\" \"fbm\"\n",
+            ":5:1:",
+            "texture class \"fbm\"",
+        ),
+    ];
+    for (text, place, feature) in missing {
+        let scene = format!("{CAMERA}{text}{light}");
+        let e = load_text("missing", &scene).unwrap_err();
+        assert!(e.contains(place) && e.contains(feature), "{text}: {e}");
+        let l = load_approximate("missing", &scene).unwrap();
+        assert!(
+            l.warnings.iter().any(|w| w.contains(place)
+                && w.contains(feature)
+                && w.ends_with("(--approximate)")),
+            "{text}: {:?}",
+            l.warnings
+        );
+    }
+    let harmless = "Shape \"sphere\" \"float alpha\" 1\nActiveTransform All\nTranslate 1 0 0\n";
+    let l = load_text("harmless", &format!("{CAMERA}{harmless}{light}")).unwrap();
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    // Before WorldBegin: a colour space and an option that change the image.
+    for (before, feature) in [
+        ("ColorSpace \"aces2065-1\"\n", "ColorSpace \"aces2065-1\""),
+        (
+            "Option \"bool forcediffuse\" true\n",
+            "Option \"forcediffuse\"",
+        ),
+    ] {
+        let e = load_text("before", &format!("{before}{CAMERA}{light}")).unwrap_err();
+        assert!(e.contains("scene.pbrt:1:1:") && e.contains(feature), "{e}");
+    }
+    let off = load_text(
+        "off",
+        &format!("Option \"bool forcediffuse\" false\n{CAMERA}{light}"),
+    )
+    .unwrap();
+    assert!(
+        off.warnings
+            .iter()
+            .any(|w| w.contains("Option \"forcediffuse\" is not supported; ignored")),
+        "{:?}",
+        off.warnings
+    );
 }

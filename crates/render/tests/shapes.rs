@@ -284,3 +284,43 @@ fn area_samples_lie_on_the_surface_and_are_uniform() {
     let want = (0.5625 - 0.25) / 0.75;
     assert!((inner as f64 / n as f64 - want).abs() < 0.006);
 }
+
+/// pbrt-v4's `TriangleMesh` negates the per-vertex normals under
+/// `ReverseOrientation`, whatever the transform's handedness, and the face
+/// normal follows the shading normal: a reversed mesh with normals faces
+/// the other way (a one-sided emitter or a dielectric's inside flips).
+#[test]
+fn reverse_orientation_negates_vertex_normals() {
+    let data = MeshData {
+        positions: vec![
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(0.0, 1.0, 0.0),
+        ],
+        indices: vec![[0, 1, 2]],
+        normals: Some(vec![Vec3::new(0.0, 0.0, 2.0); 3]),
+        uvs: None,
+    };
+    let mirror_x = Transform::scale(Vec3::new(-1.0, 1.0, 1.0)).unwrap();
+    // Straight down onto the (transformed) point (0.25, 0.5, 0).
+    let ray = |t: &Transform| Ray::new(t.point(Point3::new(0.25, 0.5, 1.0)), -Vec3::Z);
+    // (transform, reverse) -> expected world normal (normals transform
+    // with the mirror: z stays +z under a flip of x).
+    for (t, reverse, want) in [
+        (Transform::IDENTITY, false, Vec3::Z),
+        (Transform::IDENTITY, true, -Vec3::Z),
+        (mirror_x, false, Vec3::Z),
+        (mirror_x, true, -Vec3::Z),
+    ] {
+        let m = TriangleMesh::new(&t, data.clone(), reverse).unwrap();
+        let stored = m.normals.as_ref().unwrap();
+        assert!(
+            stored.iter().all(|n| (*n - want).length() < 1e-6),
+            "{stored:?}"
+        );
+        let h = m.intersect(0, &ray(&t), f32::INFINITY).unwrap();
+        let s = m.surface_hit(0, &h);
+        assert!((s.ns - want).length() < 1e-6, "ns {:?} want {want:?}", s.ns);
+        assert!((s.ng - want).length() < 1e-6, "ng {:?} want {want:?}", s.ng);
+    }
+}

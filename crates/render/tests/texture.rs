@@ -233,9 +233,10 @@ fn eight_bit_encodings() {
     ));
     assert_eq!(reg.image_count(), 3);
     assert!(ColorEncoding::parse("gamma x").is_err() && ColorEncoding::parse("rgb").is_err());
+    // pbrt-v4 reads 8-bit files other than PNG as sRGB.
     assert_eq!(
         ColorEncoding::default_for(std::path::Path::new("a.tga")),
-        ColorEncoding::Linear
+        ColorEncoding::Srgb
     );
     // A missing file is an error, not a panic.
     assert!(matches!(

@@ -369,3 +369,75 @@ fn shared_scenes_with_textures_get_textured_materials() {
     );
     assert!(!l.warnings.iter().any(|w| w.contains("average")));
 }
+
+/// A 24-bit uncompressed TGA (top-left origin), one row of `pixels`.
+fn tga_row(pixels: &[[u8; 3]]) -> Vec<u8> {
+    let w = u16::try_from(pixels.len()).unwrap().to_le_bytes();
+    let mut bytes = vec![
+        0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, w[0], w[1], 1, 0, 24, 0x20,
+    ];
+    for [r, g, b] in pixels {
+        bytes.extend([*b, *g, *r]);
+    }
+    bytes
+}
+
+/// The sRGB curve (IEC 61966-2-1), written out here independently of the
+/// image crate's table.
+fn srgb_curve(code: u8) -> f32 {
+    let c = f64::from(code) / 255.0;
+    let v = if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    };
+    v as f32
+}
+
+/// pbrt-v4 reads 8-bit files other than PNG through stb_image and decodes
+/// them as sRGB whatever the texture's `encoding` says: a TGA declared
+/// `linear` and one declared `sRGB` hold the same texels, every code on the
+/// sRGB curve, and the ignored declaration is a warning.
+#[test]
+fn eight_bit_tga_textures_are_srgb_whatever_encoding_says() {
+    let pixels: Vec<[u8; 3]> = (0..=255u8).map(|k| [k, 255 - k, k / 2]).collect();
+    let dir = std::env::temp_dir().join(format!("lowdisc-tga-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("ramp.tga"), tga_row(&pixels)).unwrap();
+    let scene = "LookAt 0 0 5 0 0 0 0 1 0\nCamera \"perspective\"\nWorldBegin\n\
+        LightSource \"point\"\n\
+        Texture \"lin\" \"spectrum\" \"imagemap\" \"string filename\" \"ramp.tga\" \
+            \"string encoding\" \"linear\"\n\
+        Texture \"srgb\" \"spectrum\" \"imagemap\" \"string filename\" \"ramp.tga\" \
+            \"string encoding\" \"sRGB\"\n\
+        Texture \"default\" \"spectrum\" \"imagemap\" \"string filename\" \"ramp.tga\"\n\
+        Material \"diffuse\" \"texture reflectance\" \"lin\"\nShape \"sphere\"\n\
+        Material \"diffuse\" \"texture reflectance\" \"srgb\"\nShape \"sphere\"\n\
+        Material \"diffuse\" \"texture reflectance\" \"default\"\nShape \"sphere\"\n";
+    let path = dir.join("scene.pbrt");
+    std::fs::write(&path, scene).unwrap();
+    let l = load_pbrt_scene(&path, &LoadOptions::default()).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let ignored: Vec<_> = l
+        .warnings
+        .iter()
+        .filter(|w| w.contains("\"encoding\" is ignored"))
+        .collect();
+    assert_eq!(ignored.len(), 1, "{:?}", l.warnings);
+    assert!(ignored[0].contains("scene.pbrt:5:"), "{}", ignored[0]);
+    let mats = l.scene.materials();
+    for m in &mats[..3] {
+        let Material::Diffuse { reflectance } = m else {
+            panic!("{m:?}")
+        };
+        for (k, [r, g, b]) in pixels.iter().enumerate() {
+            let ctx = lowdisc_render::texture::TextureEvalContext {
+                p: Point3::ZERO,
+                uv: Point2::new((k as f32 + 0.5) / 256.0, 0.5),
+            };
+            let got = reflectance.evaluate(&ctx);
+            let want = Rgb::new(srgb_curve(*r), srgb_curve(*g), srgb_curve(*b));
+            assert!(close(got, want, 1e-6), "code {k}: {got:?} vs {want:?}");
+        }
+    }
+}

@@ -38,8 +38,11 @@ Without SCENE the built-in Cornell box is rendered (the published Cornell\n\
 Box Data geometry, RGB reflectances, 35 mm camera). A pbrt-v4 scene file's\n\
 Sampler, pixelsamples, maxdepth, Film resolution and filename are used\n\
 unless --sampler, --spp, --maxdepth, --res or -o is given; --envmap replaces\n\
-the image of every image-based infinite light. Unsupported directives and\n\
-parameters are warnings with file:line:column; syntax errors are errors.\n\
+the image of every image-based infinite light. A pbrt-v4 feature lowdisc\n\
+lacks and that changes the image (media, curves, bump maps, integrators\n\
+other than path, ...) is an error naming it with file:line:column;\n\
+--approximate renders it approximately with a warning instead. Features\n\
+without effect on the pixels are warnings; syntax errors are errors.\n\
 \n\
 The renderer is a unidirectional path tracer with next-event estimation and\n\
 MIS, in RGB by default or spectrally as pbrt-v4 with --spectral. Every random\n\
@@ -93,6 +96,11 @@ pub struct RenderArgs {
     /// Environment map replacing a scene's missing one (scene files only).
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
+    /// Render the scene file's pbrt-v4 features that lowdisc lacks (media,
+    /// curves, bump maps, other integrators, ...) approximately, each with a
+    /// warning saying how, instead of refusing the scene.
+    #[arg(long)]
+    approximate: bool,
     /// Output image: .exr, .png, .pfm or .hdr [default: in out/ (created),
     /// the scene's Film filename, else render.exr].
     #[arg(long, short = 'o', value_name = "OUT")]
@@ -144,6 +152,8 @@ pub struct RenderConfig {
     pub settings: SettingsLayer,
     /// Environment map replacing the scene's.
     pub envmap: Option<PathBuf>,
+    /// Render missing pbrt-v4 features approximately (`--approximate`).
+    pub approximate: bool,
     /// Output file override.
     pub output: Option<PathBuf>,
     /// Print statistics.
@@ -203,6 +213,7 @@ impl RenderArgs {
             scene: self.scene,
             settings,
             envmap: self.envmap,
+            approximate: self.approximate,
             output: self.output,
             stats: self.stats,
             quiet: self.quiet,

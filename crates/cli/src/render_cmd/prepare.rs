@@ -107,6 +107,7 @@ fn load(
     };
     let options = LoadOptions {
         envmap_override: config.envmap.clone(),
+        approximate: config.approximate,
     };
     let loaded = load_pbrt_scene(path, &options)
         .with_context(|| format!("cannot load scene `{}`", path.display()))?;

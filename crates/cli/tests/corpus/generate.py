@@ -149,6 +149,10 @@ def scene_syntax():
     }
     for cid, text in specials.items():
         scene(cid, text)
+    # pbrt-v4 features lowdisc lacks are errors; --approximate renders them
+    # with a warning.
+    for cid in ("unknown-shape", "unknown-material", "unknown-light", "unknown-camera"):
+        case("scene", f"{cid}-approximate", render(f"{{F}}/scene/{cid}.pbrt", "--approximate"))
     # A scene directory, a device and a missing file given as the scene.
     os.makedirs(os.path.join(FILES, "scene/folder.pbrt"), exist_ok=True)
     write("scene/folder.pbrt/.keep", "")

@@ -90,6 +90,9 @@ struct Settings {
     /// Spectral rendering (`--spectral`); absent in plans that predate it.
     #[serde(default)]
     spectral: bool,
+    /// `--approximate`; absent in plans that predate it.
+    #[serde(default)]
+    approximate: bool,
     unit_samples: Option<u64>,
     command: Vec<String>,
 }
@@ -268,6 +271,7 @@ fn settings(c: &ExperimentConfig) -> Settings {
         max_depth: c.max_depth,
         threads: c.threads,
         spectral: c.spectral,
+        approximate: c.approximate,
         unit_samples: c.unit_samples,
         command: c.command.clone(),
     }
@@ -298,6 +302,7 @@ fn config(s: Settings, out: &Path) -> Result<ExperimentConfig> {
         conv_res: s.conv_res,
         conv_ref_spp: s.conv_ref_spp,
         envmap: s.envmap,
+        approximate: s.approximate,
         threshold: s.threshold,
         max_depth: s.max_depth,
         threads: s.threads,

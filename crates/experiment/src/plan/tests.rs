@@ -21,6 +21,7 @@ fn config() -> ExperimentConfig {
         conv_res: [5, 5],
         conv_ref_spp: 32,
         envmap: None,
+        approximate: false,
         threshold: 0.3,
         max_depth: 5,
         threads: None,

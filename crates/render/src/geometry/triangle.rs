@@ -19,7 +19,8 @@ pub struct TriangleMesh {
     pub positions: Vec<Point3>,
     /// Vertex indices, three per triangle.
     pub indices: Vec<[u32; 3]>,
-    /// Optional world-space unit vertex normals (shading normals).
+    /// Optional world-space unit vertex normals (shading normals), negated
+    /// under `ReverseOrientation` as pbrt-v4's `TriangleMesh` does.
     pub normals: Option<Vec<Normal3>>,
     /// Optional per-vertex texture coordinates.
     pub uvs: Option<Vec<Point2>>,
@@ -44,7 +45,11 @@ pub struct MeshData {
 
 impl TriangleMesh {
     /// Validates `data` (index range, attribute lengths, finite positions) and
-    /// transforms it to world space with `object_to_world`.
+    /// transforms it to world space with `object_to_world`. As in pbrt-v4,
+    /// `reverse_orientation` negates the vertex normals (whatever the
+    /// transform's handedness); a mesh without normals keeps
+    /// `reverse_orientation ^ transform_swaps_handedness` for its face
+    /// normals instead.
     pub fn new(
         object_to_world: &Transform,
         data: MeshData,
@@ -90,10 +95,12 @@ impl TriangleMesh {
                         object_to_world.normal(nn)
                     };
                     let l = w.length();
-                    if l > 0.0 && l.is_finite() {
-                        w / l
-                    } else {
+                    if !(l > 0.0 && l.is_finite()) {
                         Vec3::ZERO
+                    } else if reverse_orientation {
+                        -(w / l)
+                    } else {
+                        w / l
                     }
                 })
                 .collect()

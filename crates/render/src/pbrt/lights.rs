@@ -69,7 +69,9 @@ impl PbrtLoader {
             |e: crate::light::LightError| ParseError::scene(loc, format!("infinite light: {e}"));
         if ps.find("portal").is_some() {
             ps.mark_used("portal");
-            self.unsupported(loc, "infinite light portals");
+            // pbrt-v4's portal light is dark behind the portal.
+            let instead = "the light shines from every direction";
+            self.approximated(loc, "infinite light portal", instead)?;
         }
         let file = ps.get_string("filename").map(|f| self.resolve(f));
         let path = match (self.options.envmap_override.clone(), file) {
@@ -157,7 +159,8 @@ impl PbrtLoader {
             "infinite" => self.infinite_light(ps, loc)?,
             other => {
                 let what = format!("LightSource \"{other}\"");
-                self.unsupported(loc, &what);
+                self.approximated(loc, &what, "the light is left out")?;
+                ps.into_iter().for_each(pbrt_format::Param::mark_used);
                 return Ok(());
             }
         };
@@ -187,12 +190,14 @@ impl PbrtLoader {
     ) -> Result<(), ParseError> {
         if ty != "diffuse" {
             let what = format!("AreaLightSource \"{ty}\"");
-            self.unsupported(loc, &what);
+            self.approximated(loc, &what, "the shapes do not emit")?;
+            ps.into_iter().for_each(pbrt_format::Param::mark_used);
             return Ok(());
         }
         if ps.find("filename").is_some() {
             ps.mark_used("filename");
-            self.unsupported(loc, "image area lights (\"filename\"); using L");
+            let what = "image area light (AreaLightSource \"filename\")";
+            self.approximated(loc, what, "\"L\" is used")?;
         }
         let l = self.light_rgb(ps, "L", loc)?;
         let scale = ps.float_or("scale", 1.0) as f32;

@@ -14,7 +14,8 @@ use crate::settings::Given;
 use crate::texture::TextureRegistry;
 use crate::view::{CameraSpec, ViewSpec};
 use pbrt_format::{
-    Directive, FileKind, Loc, ParamSet, ParseError, ParserTarget, TargetResult, Warnings,
+    ActiveTransform, Directive, FileKind, Loc, Param, ParamSet, ParamValues, ParseError,
+    ParserTarget, TargetResult, Warnings,
 };
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -111,10 +112,30 @@ impl PbrtLoader {
         self.warnings.warn(loc, message);
     }
 
-    /// Warns once per message (for "X is not supported").
+    /// Warns once per message (for "X is not supported" where X does not
+    /// change the image).
     pub(super) fn unsupported(&mut self, loc: &Loc, what: &str) {
         self.warnings
             .warn_once(loc, format!("{what} is not supported; ignored"));
+    }
+
+    /// A pbrt-v4 `feature` that lowdisc lacks and that changes the image:
+    /// an error at `loc` naming it, or, with [`LoadOptions::approximate`],
+    /// a warning (once per message) saying that `instead` is rendered.
+    pub(super) fn approximated(
+        &mut self,
+        loc: &Loc,
+        feature: &str,
+        instead: &str,
+    ) -> Result<(), ParseError> {
+        if self.options.approximate {
+            let message = format!("{feature} is not supported; {instead} (--approximate)");
+            self.warnings.warn_once(loc, message);
+            Ok(())
+        } else {
+            let message = format!("{feature} is not supported (with --approximate: {instead})");
+            Err(ParseError::scene(loc, message))
+        }
     }
 
     /// Builds the scene after the last directive.
@@ -201,6 +222,44 @@ impl PbrtLoader {
         Ok(())
     }
 
+    /// `Option "type name" value`: pbrt-v4's options that change the image
+    /// when enabled are errors (see [`PbrtLoader::approximated`]); the others
+    /// (speed, statistics, the seed, `rendercoordsys`) are ignored with a
+    /// warning.
+    fn option_directive(&mut self, p: &Param, loc: &Loc) -> Result<(), ParseError> {
+        let enabled = matches!(&p.values, ParamValues::Bools(b) if b.first() == Some(&true));
+        let changes_image = matches!(
+            p.name.as_str(),
+            "forcediffuse" | "disablepixeljitter" | "disablewavelengthjitter"
+        );
+        let what = format!("Option \"{}\"", p.name);
+        if changes_image && enabled {
+            self.approximated(loc, &what, "the option is ignored")
+        } else {
+            self.unsupported(loc, &what);
+            Ok(())
+        }
+    }
+
+    /// `MediumInterface`: pbrt-v4's `path` integrator ignores media, as
+    /// lowdisc does; under any other integrator (pbrt-v4's default is
+    /// `volpath`) a named medium scatters and absorbs, which lowdisc cannot.
+    fn medium_interface(&mut self, inside: &str, outside: &str, loc: &Loc) -> TargetResult {
+        let Some(name) = [inside, outside].into_iter().find(|n| !n.is_empty()) else {
+            return Ok(());
+        };
+        let integrator = self.settings.integrator.as_deref().unwrap_or("volpath");
+        if integrator == "path" {
+            self.warnings.warn_once(
+                loc,
+                "participating media are ignored (as by pbrt-v4's \"path\" integrator)",
+            );
+            return Ok(());
+        }
+        let what = format!("participating medium \"{name}\" (Integrator \"{integrator}\")");
+        self.approximated(loc, &what, "the medium is ignored")
+    }
+
     fn attribute_end(&mut self, loc: &Loc) {
         if !self.state.pop() {
             self.warn(loc, "unmatched AttributeEnd; ignored");
@@ -212,16 +271,11 @@ impl ParserTarget for PbrtLoader {
     fn directive(&mut self, directive: Directive, loc: &Loc) -> TargetResult {
         self.check_block(&directive, loc)?;
         match directive {
-            Directive::Option(p) => {
-                let what = format!("Option \"{}\"", p.name);
-                self.unsupported(loc, &what);
-            }
+            Directive::Option(p) => self.option_directive(&p, loc)?,
             Directive::ColorSpace(name) => {
                 if name != "srgb" {
-                    self.warn(
-                        loc,
-                        format!("ColorSpace \"{name}\": rendering in sRGB primaries"),
-                    );
+                    let what = format!("ColorSpace \"{name}\"");
+                    self.approximated(loc, &what, "rendering in sRGB primaries")?;
                 }
             }
             Directive::Identity => self.state.cur.ctm = Transform::IDENTITY,
@@ -246,8 +300,14 @@ impl ParserTarget for PbrtLoader {
                     );
                 }
             },
-            Directive::ActiveTransform(_) | Directive::TransformTimes(..) => {
-                self.unsupported(loc, "motion blur (ActiveTransform, TransformTimes)")
+            Directive::ActiveTransform(ActiveTransform::All) => {}
+            Directive::ActiveTransform(_) => self.approximated(
+                loc,
+                "motion blur (ActiveTransform StartTime/EndTime)",
+                "every transform applies at all times",
+            )?,
+            Directive::TransformTimes(..) => {
+                self.unsupported(loc, "TransformTimes (without motion blur)")
             }
             Directive::ReverseOrientation => {
                 self.state.cur.reverse_orientation = !self.state.cur.reverse_orientation
@@ -260,8 +320,9 @@ impl ParserTarget for PbrtLoader {
             Directive::Accelerator(..) => {
                 self.unsupported(loc, "Accelerator (the renderer always uses its SAH BVH)")
             }
-            Directive::MakeNamedMedium(..) | Directive::MediumInterface(..) => {
-                self.unsupported(loc, "participating media")
+            Directive::MakeNamedMedium(..) => {}
+            Directive::MediumInterface(inside, outside) => {
+                self.medium_interface(&inside, &outside, loc)?
             }
             Directive::WorldBegin => {
                 self.state.cur.ctm = Transform::IDENTITY;
@@ -271,8 +332,8 @@ impl ParserTarget for PbrtLoader {
             Directive::TransformBegin => self.state.push(true),
             Directive::AttributeEnd | Directive::TransformEnd => self.attribute_end(loc),
             Directive::Attribute(target, _) => {
-                let what = format!("Attribute \"{target}\"");
-                self.unsupported(loc, &what);
+                let what = format!("Attribute \"{target}\" (default parameters)");
+                self.approximated(loc, &what, "the defaults are ignored")?;
             }
             Directive::Shape(ty, params) => self.shape_directive(ty, params, loc)?,
             Directive::Material(ty, params) => {

@@ -143,9 +143,9 @@ impl PbrtLoader {
         }
     }
 
-    /// `eta` as a float, a named glass or a spectrum (averaged). pbrt-v4
-    /// does not texture indices of refraction; a float texture given here is
-    /// read at `uv = (0, 0)` with a warning unless it is constant.
+    /// `eta` as a float, a named glass or a spectrum (averaged). A float
+    /// texture that is not constant is not supported (read at `uv = (0, 0)`
+    /// with `--approximate`).
     fn eta_param(&mut self, ps: &ParamSet, name: &str, loc: &Loc) -> Result<f32, ParseError> {
         if let Some(FloatOrTexture::Value(v)) = ps.get_float_or_texture(name) {
             return Ok(v as f32);
@@ -154,10 +154,7 @@ impl PbrtLoader {
             let t = self.float_tex(ps, name, 1.5.into(), loc)?;
             if t.as_constant().is_none() {
                 let what = format!("a textured \"{name}\"");
-                self.warnings.warn_once(
-                    loc,
-                    format!("{what} is not supported; using its value at uv (0, 0)"),
-                );
+                self.approximated(loc, &what, "its value at uv (0, 0) is used")?;
             }
             return Ok(t.evaluate(&TextureEvalContext::default()));
         }
@@ -278,10 +275,10 @@ impl PbrtLoader {
             },
             "measured" => {
                 let f = ps.get_string("filename").unwrap_or("").to_string();
-                self.warn(loc, format!(
-                    "measured material \"{f}\" is approximated by a diffuse or rough conductor fallback"
-                ));
-                return Ok(Some(super::measured(&f)));
+                let what = format!("material \"measured\" (\"{f}\")");
+                let instead = "a diffuse or rough conductor fallback is used";
+                self.approximated(loc, &what, instead)?;
+                Material::measured_fallback(&f)
             }
             _ => return Ok(None),
         };
@@ -327,10 +324,8 @@ impl PbrtLoader {
         let (m0, m1) = match (m0, m1) {
             (Some(m0), Some(m1)) => (m0, m1),
             (m0, _) => {
-                self.warn(
-                    loc,
-                    "mix with an \"interface\" material: using the other material",
-                );
+                let what = "mix with an \"interface\" material";
+                self.approximated(loc, what, "the other material is used")?;
                 return Ok(if m0.is_some() { r0 } else { r1 });
             }
         };
@@ -371,18 +366,22 @@ impl PbrtLoader {
         let m = match m {
             Some(m) => m,
             None => {
-                self.warn(
-                    loc,
-                    format!("unknown material type \"{ty}\"; using diffuse"),
-                );
+                let what = format!("material \"{ty}\"");
+                self.approximated(loc, &what, "a diffuse material is used")?;
+                // Its parameters are the missing material's, not typos.
+                ps.into_iter().for_each(pbrt_format::Param::mark_used);
                 Material::diffuse(Rgb::splat(0.5))
             }
         };
-        for p in ["displacement", "normalmap"] {
-            if ps.find(p).is_some() {
+        for (p, what) in [
+            ("displacement", "bump mapping"),
+            ("normalmap", "normal mapping"),
+        ] {
+            if let Some(param) = ps.find(p) {
                 ps.mark_used(p);
-                let what = format!("material parameter \"{p}\"");
-                self.unsupported(loc, &what);
+                let what = format!("{what} (material parameter \"{p}\")");
+                let at = param.loc.clone();
+                self.approximated(&at, &what, "the surface is smooth")?;
             }
         }
         ps.finish(&context, &mut self.warnings)?;

@@ -9,18 +9,31 @@
 //! [`SettingsLayer`], each naming its directive; the output file), which
 //! the caller may override ([`crate::settings::Settings::resolve`]).
 //!
-//! What is approximated (each with a warning where it applies):
+//! **No silent substitutions.** A pbrt-v4 feature that lowdisc lacks and
+//! that changes the image (a `curve` shape, the `hair` or `measured`
+//! material, bump or normal maps, alpha cut-outs, participating media under
+//! a volumetric integrator, the `bdpt`, `sppm`, `mlt`, ... integrators, a
+//! non-sRGB colour space, ...) is an error naming the feature and its
+//! `file:line:column`, unless [`LoadOptions::approximate`] is set: then it
+//! is a warning saying what is rendered instead. Features that do not change
+//! the pixels (`Accelerator`, a sampler's `seed`, `Option`s that only change
+//! speed, ...) are warnings. The full list, directive by directive, is in
+//! `docs/guide/pbrt-compatibility.md`.
+//!
+//! What is always approximated, without a message:
 //! * textures are evaluated at each shading point without filtering beyond
-//!   bilinear image lookups; bump, normal and displacement maps are ignored;
-//! * `measured` materials use [`Material::measured_fallback`];
-//! * `interface` shapes (medium boundaries) are skipped, media are ignored;
+//!   bilinear image lookups;
 //! * spectra (named, sampled, files, blackbody) are reduced to RGB for RGB
 //!   mode; spectral mode evaluates conductors' measured `eta`/`k` and
 //!   lights' blackbody, sampled and file spectra as spectra (other spectral
 //!   parameters, e.g. a reflectance given as a spectrum, use their RGB,
 //!   uplifted), and named glasses keep one index of refraction (no
-//!   dispersion);
-//! * `bdpt`, `sppm`, `lightpath`, ... integrators render with the path tracer.
+//!   dispersion).
+//!
+//! 8-bit image textures are decoded as pbrt-v4 decodes them (see
+//! [`crate::texture::ColorEncoding::for_file`]): PNG by the `encoding`
+//! parameter (sRGB by default), every other 8-bit format (TGA) as sRGB
+//! whatever `encoding` says.
 //!
 //! Relative file names are resolved against the directory of the main scene
 //! file, even inside included files (as pbrt-v4 does).
@@ -33,7 +46,6 @@ mod options;
 mod shapes;
 mod state;
 
-use crate::bsdf::Material;
 use crate::error::RenderError;
 use crate::scene::Scene;
 use crate::settings::SettingsLayer;
@@ -48,6 +60,10 @@ pub struct LoadOptions {
     /// Environment map used instead of every image-based `infinite` light's
     /// file (the command line's `--envmap`).
     pub envmap_override: Option<PathBuf>,
+    /// Render pbrt-v4 features that lowdisc lacks approximately, each with a
+    /// warning saying how (the command line's `--approximate`), instead of
+    /// refusing the scene with an error naming the first one.
+    pub approximate: bool,
 }
 
 /// The rendering settings a scene file asks for (`Sampler`, `Integrator`,
@@ -107,7 +123,9 @@ pub struct SceneCounts {
 /// `file:line:column` where there is one): unreadable files, syntax errors,
 /// unreadable or malformed meshes (the message names the PLY file), invalid
 /// shape parameters, undefined named materials or objects, a missing
-/// environment map without an override.
+/// environment map without an override, and, unless
+/// [`LoadOptions::approximate`], a pbrt-v4 feature that lowdisc lacks and
+/// that changes the image.
 pub fn load_pbrt_scene(path: &Path, options: &LoadOptions) -> Result<LoadedScene, RenderError> {
     let mut loader = PbrtLoader::new(path, options.clone());
     pbrt_format::parse_file(path, &mut loader)
@@ -121,9 +139,4 @@ pub fn load_pbrt_scene(path: &Path, options: &LoadOptions) -> Result<LoadedScene
 pub fn load_scene_file(path: &Path) -> Result<(Scene, View), RenderError> {
     let loaded = load_pbrt_scene(path, &LoadOptions::default())?;
     Ok((loaded.scene, View::native(&loaded.view)?))
-}
-
-/// A material for a `measured` BSDF file: [`Material::measured_fallback`].
-fn measured(filename: &str) -> Material {
-    Material::measured_fallback(filename)
 }

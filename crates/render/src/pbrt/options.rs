@@ -36,10 +36,8 @@ impl PbrtLoader {
         let world_from_camera = camera_from_world.inverse();
         self.state.named.insert("camera".into(), world_from_camera);
         if ty != "perspective" {
-            self.warn(
-                loc,
-                format!("Camera \"{ty}\" is not supported; using a perspective camera"),
-            );
+            let what = format!("Camera \"{ty}\"");
+            self.approximated(loc, &what, "a perspective camera is used")?;
         }
         let d = PerspectiveParams::default();
         let params = PerspectiveParams {
@@ -74,11 +72,17 @@ impl PbrtLoader {
         loc: &Loc,
     ) -> Result<(), ParseError> {
         self.film_loc = Some(loc.clone());
-        if ty != "rgb" {
-            self.warn(
+        match ty {
+            "rgb" => {}
+            // Their RGB channels are the "rgb" film's image.
+            "gbuffer" | "spectral" => self.warn(
                 loc,
-                format!("Film \"{ty}\" is not supported; using \"rgb\""),
-            );
+                format!("Film \"{ty}\": only the RGB image is written, as by Film \"rgb\""),
+            ),
+            _ => {
+                let what = format!("Film \"{ty}\"");
+                self.approximated(loc, &what, "Film \"rgb\" is used")?;
+            }
         }
         let [w, h] = self.film.resolution;
         let w = resolution_value(ps.int_or("xresolution", w as i64), "xresolution", loc)?;
@@ -98,10 +102,8 @@ impl PbrtLoader {
         if let Some(s) = ps.get_string("sensor")
             && s != "cie1931"
         {
-            self.warn(
-                loc,
-                format!("Film sensor \"{s}\" is not supported; using cie1931"),
-            );
+            let what = format!("Film sensor \"{s}\"");
+            self.approximated(loc, &what, "the cie1931 sensor is used")?;
         }
         let white_balance = ps.float_or("whitebalance", 0.0);
         if !(white_balance >= 0.0 && white_balance.is_finite()) {
@@ -113,6 +115,8 @@ impl PbrtLoader {
             ));
         }
         self.film.white_balance = white_balance as f32;
+        // The diagonal only matters for the realistic camera; half floats
+        // only change the file's precision.
         for p in ["diagonal", "savefp16"] {
             ps.mark_used(p);
         }
@@ -182,16 +186,18 @@ impl PbrtLoader {
         ps: &ParamSet,
         loc: &Loc,
     ) -> Result<(), ParseError> {
-        match ty {
-            "path" => {}
-            "volpath" => self.warn(
-                loc,
-                "Integrator \"volpath\": rendering with the path tracer; media are ignored",
-            ),
-            other => self.warn(
-                loc,
-                format!("Integrator \"{other}\" is not available; rendering with the path tracer"),
-            ),
+        // Without participating media pbrt-v4's "volpath" computes what
+        // "path" computes; a medium it would scatter in is an error at its
+        // `MediumInterface`.
+        if !matches!(ty, "path" | "volpath") {
+            let what = format!("Integrator \"{ty}\"");
+            self.approximated(loc, &what, "rendered by the path tracer")?;
+            // The other integrator's own parameters mean nothing here.
+            for p in ps {
+                if !matches!(p.name.as_str(), "maxdepth" | "regularize" | "lightsampler") {
+                    p.mark_used();
+                }
+            }
         }
         // Without "maxdepth" the settings' default applies (pbrt's, 5).
         if let Some(depth) = ps.get_int("maxdepth") {
@@ -203,12 +209,13 @@ impl PbrtLoader {
                 Err(_) => self.warn(loc, format!("Integrator: maxdepth {depth} < 0; ignored")),
             }
         }
-        for p in ["regularize", "lightsampler"] {
-            if ps.find(p).is_some() {
-                ps.mark_used(p);
-                let what = format!("Integrator parameter \"{p}\"");
-                self.unsupported(loc, &what);
-            }
+        if ps.bool_or("regularize", false) {
+            self.approximated(loc, "Integrator \"regularize\"", "no regularization")?;
+        }
+        // The light sampler only changes the noise.
+        if ps.find("lightsampler").is_some() {
+            ps.mark_used("lightsampler");
+            self.unsupported(loc, "Integrator parameter \"lightsampler\"");
         }
         self.settings.integrator = Some(ty.to_string());
         ps.finish(&format!("Integrator \"{ty}\""), &mut self.warnings)

@@ -12,7 +12,7 @@ use crate::light::diffuse_power_scale;
 use crate::math::{Normal3, Point2, Point3, Transform, Vec3};
 use crate::scene::Emission;
 use crate::spectrum::Rgb;
-use pbrt_format::{Loc, ParamSet, ParseError, TargetResult};
+use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, TargetResult};
 
 /// A built shape before it goes to the scene builder.
 enum Built {
@@ -173,6 +173,42 @@ impl PbrtLoader {
         }
     }
 
+    /// Shape parameters lowdisc lacks: alpha cut-outs (a texture or a
+    /// constant below 1), image area lights (`emissionfilename`) and
+    /// displacement (`loopsubdiv`).
+    fn unsupported_shape_params(&mut self, def: &ShapeDef) -> Result<(), ParseError> {
+        let ps = &def.params;
+        let opaque = matches!(
+            ps.get_float_or_texture("alpha"),
+            None | Some(FloatOrTexture::Value(1.0))
+        );
+        let missing = [
+            ("alpha", !opaque, "alpha cut-out", "the shape is opaque"),
+            (
+                "emissionfilename",
+                true,
+                "image area light",
+                "the light's \"L\" is used",
+            ),
+            (
+                "displacement",
+                true,
+                "displacement",
+                "the surface is not displaced",
+            ),
+        ];
+        for (name, changes_image, feature, instead) in missing {
+            let Some(p) = ps.find(name) else { continue };
+            ps.mark_used(name);
+            if changes_image {
+                let what = format!("{feature} ({} parameter \"{name}\")", def.ty);
+                let at = p.loc.clone();
+                self.approximated(&at, &what, instead)?;
+            }
+        }
+        Ok(())
+    }
+
     /// Creates the shape of `def` with object-to-world `ctm` and adds it to
     /// the scene with its material and (optional) area light.
     pub(super) fn create_shape(
@@ -184,16 +220,13 @@ impl PbrtLoader {
         let loc = def.loc.clone();
         let Some(built) = self.build_shape(def, ctm)? else {
             let what = format!("Shape \"{}\"", def.ty);
-            self.unsupported(&loc, &what);
+            self.approximated(&loc, &what, "the shape is left out")?;
+            def.params
+                .into_iter()
+                .for_each(pbrt_format::Param::mark_used);
             return Ok(());
         };
-        for name in ["alpha", "emissionfilename", "displacement"] {
-            if def.params.find(name).is_some() {
-                let what = format!("{} parameter \"{name}\"", def.ty);
-                self.unsupported(&loc, &what);
-                def.params.mark_used(name);
-            }
-        }
+        self.unsupported_shape_params(def)?;
         def.params
             .finish(&format!("Shape \"{}\"", def.ty), &mut self.warnings)?;
         let Some(material) = self.material_index(def.material) else {

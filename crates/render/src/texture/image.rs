@@ -1,6 +1,14 @@
 //! Image maps: texel storage with pbrt-v4's colour encodings for 8-bit files,
 //! wrap modes and bilinear lookups.
 //!
+//! **Decoding as pbrt-v4** (its `Image::Read`): a PNG file's codes (8- or
+//! 16-bit) are decoded with the texture's `encoding` parameter (`sRGB`,
+//! `linear` or `gamma G`; pbrt-v4's default for `.png` is sRGB). Every other
+//! 8-bit format is read by pbrt-v4 through stb_image and tagged sRGB whatever
+//! `encoding` says; of those, lowdisc reads TGA (an 8-bit TGA is therefore
+//! always sRGB). Float formats (EXR, HDR, PFM) hold linear values, taken as
+//! they are. See [`ColorEncoding::for_file`].
+//!
 //! Lookups follow pbrt-v4's `Image::Bilerp`: a coordinate `s` in `[0,1]`
 //! maps to the continuous texel position `s * width - 0.5`, so texel `i`'s
 //! centre is at `s = (i + 0.5) / width`. Row 0 is the *top* of the file; the
@@ -11,8 +19,9 @@ use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, Transfer, read_image_wit
 use std::path::Path;
 
 /// How the 8-bit (or 16-bit) codes of a PNG or TGA file become linear
-/// values (pbrt-v4's `encoding` parameter). Float images (EXR, HDR, PFM) are
-/// always linear.
+/// values (pbrt-v4's `encoding` parameter, which only PNG files obey; see
+/// [`ColorEncoding::for_file`]). Float images (EXR, HDR, PFM) are always
+/// linear.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ColorEncoding {
     /// The sRGB curve.
@@ -42,18 +51,40 @@ impl ColorEncoding {
         }
     }
 
-    /// pbrt-v4's default for an image file: sRGB for `.png`, linear otherwise
-    /// (so 8-bit TGA textures are linear unless the scene says otherwise).
-    pub fn default_for(path: &Path) -> ColorEncoding {
-        let png = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| e.eq_ignore_ascii_case("png"));
-        if png {
-            ColorEncoding::Srgb
-        } else {
-            ColorEncoding::Linear
+    /// The encoding pbrt-v4 decodes the file `path` with when the texture
+    /// declares `declared` (`None`: no `encoding` parameter): a PNG obeys
+    /// `declared` (sRGB when absent); float files (EXR, HDR, PFM) are linear;
+    /// every other file (8-bit TGA) is sRGB, whatever `declared` says.
+    ///
+    /// ```
+    /// use lowdisc_render::texture::ColorEncoding;
+    /// use std::path::Path;
+    /// let lin = Some(ColorEncoding::Linear);
+    /// assert_eq!(ColorEncoding::for_file(Path::new("a.png"), lin), ColorEncoding::Linear);
+    /// assert_eq!(ColorEncoding::for_file(Path::new("a.png"), None), ColorEncoding::Srgb);
+    /// assert_eq!(ColorEncoding::for_file(Path::new("a.tga"), lin), ColorEncoding::Srgb);
+    /// assert_eq!(ColorEncoding::for_file(Path::new("a.exr"), None), ColorEncoding::Linear);
+    /// ```
+    pub fn for_file(path: &Path, declared: Option<ColorEncoding>) -> ColorEncoding {
+        if Self::is_float_file(path) {
+            return ColorEncoding::Linear;
         }
+        match ImageFormat::from_extension(path) {
+            Some(ImageFormat::Png) => declared.unwrap_or(ColorEncoding::Srgb),
+            _ => ColorEncoding::Srgb,
+        }
+    }
+
+    /// pbrt-v4's default for an image file without an `encoding` parameter:
+    /// [`ColorEncoding::for_file`] with `None` (linear only for float files).
+    pub fn default_for(path: &Path) -> ColorEncoding {
+        Self::for_file(path, None)
+    }
+
+    /// Whether `path` names a float image (EXR, HDR, PFM), whose values no
+    /// encoding applies to.
+    pub fn is_float_file(path: &Path) -> bool {
+        ImageFormat::from_extension(path).is_some_and(|f| f.is_high_dynamic_range())
     }
 
     /// Decodes a normalised code `v` in `[0,1]`.
@@ -104,7 +135,8 @@ impl TexImage {
     }
 
     /// Reads an image file; for 8-bit/16-bit formats the codes are decoded
-    /// with `encoding`, float formats are taken as they are.
+    /// with `encoding` (as given: [`ColorEncoding::for_file`] is the
+    /// caller's choice of it), float formats are taken as they are.
     pub fn load(path: &Path, encoding: ColorEncoding) -> Result<TexImage, TextureError> {
         // sRGB codes are decoded by the reader (8-bit ones from its table of
         // the curve's values, without a `powf` per texel channel).
@@ -113,7 +145,7 @@ impl TexImage {
             _ => Transfer::Raw,
         };
         let image = read_image_with(path, &ReadOptions { transfer })?;
-        let float = ImageFormat::from_extension(path).is_some_and(|f| f.is_high_dynamic_range());
+        let float = ColorEncoding::is_float_file(path);
         if float || !matches!(encoding, ColorEncoding::Gamma(_)) {
             return Ok(TexImage { image });
         }

@@ -113,14 +113,15 @@ impl TextureRegistry {
         self.images.len()
     }
 
-    /// Loads an image once per (file, encoding); `None` takes pbrt-v4's
-    /// default encoding for the file ([`ColorEncoding::default_for`]).
+    /// Loads an image once per (file, encoding), decoded as pbrt-v4 decodes
+    /// it when the texture declares `encoding` ([`ColorEncoding::for_file`]:
+    /// only PNG files obey it; `None` is pbrt-v4's default).
     pub fn load_image(
         &mut self,
         path: &Path,
         encoding: Option<ColorEncoding>,
     ) -> Result<Arc<TexImage>, TextureError> {
-        let encoding = encoding.unwrap_or_else(|| ColorEncoding::default_for(path));
+        let encoding = ColorEncoding::for_file(path, encoding);
         let key = ImageKey {
             path: path.to_path_buf(),
             encoding: format!("{encoding:?}"),

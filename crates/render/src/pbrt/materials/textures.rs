@@ -5,12 +5,17 @@
 //!
 //! Lookups are point evaluations (no ray differentials): image maps are
 //! filtered bilinearly whatever `filter` says, checkerboards are not
-//! antialiased. Not supported, with a warning: the `spherical` and
-//! `cylindrical` mappings (the `uv` mapping is used), the `octahedralsphere`
-//! wrap mode (`repeat` is used) and the procedural classes (`bilerp`,
-//! `dots`, `fbm`, `marble`, `windy`, `wrinkled`, `ptex`, `directionmix`),
-//! which become a constant 0.5. A missing or unreadable image file is an
-//! error, as in pbrt-v4 ("file not found").
+//! antialiased. Not supported (errors, or with `--approximate` warnings):
+//! the `spherical` and `cylindrical` mappings (the `uv` mapping is used), the
+//! `octahedralsphere` wrap mode (`repeat` is used) and the procedural classes
+//! (`bilerp`, `dots`, `fbm`, `marble`, `windy`, `wrinkled`, `ptex`,
+//! `directionmix`), which become a constant 0.5. A missing or unreadable
+//! image file is an error, as in pbrt-v4 ("file not found").
+//!
+//! An image's 8-bit codes are decoded as pbrt-v4 decodes them
+//! ([`ColorEncoding::for_file`]): a PNG by `encoding` (default sRGB), any
+//! other 8-bit file (TGA) as sRGB whatever `encoding` says, with a warning
+//! when it says something else.
 
 use crate::math::Vec3;
 use crate::pbrt::loader::PbrtLoader;
@@ -29,10 +34,10 @@ fn vec3(v: Option<[f64; 3]>, default: Vec3) -> Vec3 {
 
 impl PbrtLoader {
     /// The 2-D mapping of a texture (`mapping`, `uscale`, ..., `v1`, `v2`).
-    fn texture_mapping(&mut self, ps: &ParamSet, loc: &Loc) -> TextureMapping {
+    fn texture_mapping(&mut self, ps: &ParamSet, loc: &Loc) -> Result<TextureMapping, ParseError> {
         let f = |p: &str, d: f64| ps.float_or(p, d) as f32;
         let (du, dv) = (f("udelta", 0.0), f("vdelta", 0.0));
-        match ps.string_or("mapping", "uv") {
+        Ok(match ps.string_or("mapping", "uv") {
             "planar" => TextureMapping::Planar {
                 texture_from_world: self.state.cur.ctm.inverse(),
                 vs: vec3(ps.get_vector3("v1"), Vec3::X),
@@ -42,8 +47,8 @@ impl PbrtLoader {
             },
             other => {
                 if other != "uv" {
-                    let what = format!("texture mapping \"{other}\" (the uv mapping is used)");
-                    self.unsupported(loc, &what);
+                    let what = format!("texture mapping \"{other}\"");
+                    self.approximated(loc, &what, "the uv mapping is used")?;
                 }
                 TextureMapping::Uv {
                     su: f("uscale", 1.0),
@@ -52,13 +57,13 @@ impl PbrtLoader {
                     dv,
                 }
             }
-        }
+        })
     }
 
     /// The checkerboard's pattern (`dimension` 2 or 3).
     fn checker(&mut self, ps: &ParamSet, loc: &Loc) -> Result<Checker, ParseError> {
         match ps.int_or("dimension", 2) {
-            2 => Ok(Checker::TwoD(self.texture_mapping(ps, loc))),
+            2 => Ok(Checker::TwoD(self.texture_mapping(ps, loc)?)),
             3 => Ok(Checker::ThreeD(self.state.cur.ctm.inverse())),
             d => Err(ParseError::scene(
                 loc,
@@ -84,18 +89,30 @@ impl PbrtLoader {
         ps.mark_used("maxanisotropy");
         let wrap = match ps.string_or("wrap", "repeat") {
             "octahedralsphere" => {
-                self.unsupported(loc, "wrap mode \"octahedralsphere\" (repeat is used)");
+                let what = "texture wrap mode \"octahedralsphere\"";
+                self.approximated(loc, what, "repeat is used")?;
                 WrapMode::Repeat
             }
             w => WrapMode::parse(w).map_err(|e| ParseError::scene(loc, e.to_string()))?,
         };
-        let mapping = self.texture_mapping(ps, loc);
+        let mapping = self.texture_mapping(ps, loc)?;
         let scale = ps.float_or("scale", 1.0) as f32;
         let invert = ps.bool_or("invert", false);
         if let Err(e) = lowdisc_files::check_input(&path, u64::MAX) {
             let why = e.io_error();
             let message = format!("imagemap: {}: {why}", path.display());
             return Err(ParseError::scene(loc, message));
+        }
+        if let Some(e) = encoding
+            && ColorEncoding::for_file(&path, Some(e)) != e
+            && !ColorEncoding::is_float_file(&path)
+        {
+            let at = ps.find("encoding").map_or(loc, |p| &p.loc).clone();
+            let message = format!(
+                "imagemap: \"encoding\" is ignored for {}: pbrt-v4 decodes 8-bit files other than PNG as sRGB",
+                path.display()
+            );
+            self.warn(&at, message);
         }
         let image = self
             .textures
@@ -177,8 +194,9 @@ impl PbrtLoader {
             },
             "imagemap" => Texture::Image(Arc::new(self.image_texture(ps, loc)?)),
             _ => {
-                let what = format!("texture class \"{class}\" (a constant 0.5 is used)");
-                self.unsupported(loc, &what);
+                let what = format!("texture class \"{class}\"");
+                self.approximated(loc, &what, "a constant 0.5 is used")?;
+                ps.into_iter().for_each(pbrt_format::Param::mark_used);
                 Texture::Constant(T::splat(0.5))
             }
         };
