@@ -8,11 +8,11 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use lowdisc::catalog::pixel_rows::{self, pixel_rows};
-use lowdisc::catalog::{DEFAULT_TILE_SIZE, Order, SamplerConfig, generate_points};
+use lowdisc::catalog::{DEFAULT_TILE_SIZE, Family, Order, SamplerConfig, generate_points};
 use lowdisc_render::render::MAX_TILE_SIZE;
 
 use crate::output::{Format, TableWriter};
-use crate::{parse, plots};
+use crate::{parse, plots, sampler_help};
 
 /// Point order for the Sobol family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -31,22 +31,24 @@ pub const MAX_PIXEL_DIMS: u32 = 1 << 16;
 /// The most sampler draws of one pixel-mode request, replay included.
 const MAX_PIXEL_DRAWS: u64 = 1 << 32;
 
-/// The long help of `points` (`lowdisc points --help`).
-pub const LONG_ABOUT: &str = "\
+/// The long help of `points` (`lowdisc points --help`), with the names of
+/// each family from the catalog's table.
+pub fn long_about() -> String {
+    let sobol = sampler_help::names_where(Family::is_sobol, 8, 72);
+    let per_pixel = sampler_help::names_where(|f| f == Family::PerPixel, 1, 72);
+    format!(
+        "\
 Print points of a sequence, or the samples of one pixel.\n\
 \n\
 Sequence mode (default): prints the first N points of the sampler's\n\
 sequence in dimensions 0..D (or A..B), one point per line. The Sobol\n\
-family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, sobol-lms, paper,\n\
-paper-repro)\n\
+family ({sobol})\n\
 prints in Gray-code order by default, so\n\
 `lowdisc points --sampler sobol --n 65536 --dims 1024 --format u32`\n\
 prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)\n\
 .random(65536) as the integers floor(x * 2^32). The per-pixel samplers\n\
-(padded-sobol, padded-sobol-lms, zsobol, sobol-burley, laine-karras,\n\
-sobol-pixel-xor, pmj02, pmj02bn, zsobol-4d, zsobol-joint, zorder-sz,\n\
-cascaded-sobol) print the samples of pixel (0,0) of a\n\
-1x1 image with N samples per pixel.\n\
+({per_pixel})\n\
+print the samples of pixel (0,0) of a 1x1 image with N samples per pixel.\n\
 \n\
 Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a\n\
 --res image, prints the film position (X + ox, Y + oy), where (ox, oy) is\n\
@@ -61,13 +63,15 @@ many values as asked for here.\n\
 dimensions of the points (with a grid of 2^ceil(m/2) x 2^floor(m/2) cells,\n\
 m = floor(log2 N): a (0,m,2)-net has one point per cell), or in pixel mode\n\
 the film positions inside the pixel.\n\
-";
+"
+    )
+}
 
 /// The arguments of `points`.
 #[derive(Debug, Args)]
 pub struct PointsArgs {
     /// Sampler name (`--help` lists them all).
-    #[arg(long, short = 's', value_name = "NAME", long_help = crate::parse::sampler_list())]
+    #[arg(long, short = 's', value_name = "NAME", long_help = sampler_help::sampler_list("Sampler name, one of:", ""))]
     sampler: String,
     /// Seed of every random choice.
     #[arg(long, default_value_t = 0)]

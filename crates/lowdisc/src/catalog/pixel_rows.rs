@@ -20,8 +20,9 @@
 
 use alloc::vec;
 
+use super::Sampler;
 use super::{SamplerConfig, SamplerName};
-use crate::pixel::{PixelSampler, Sampler};
+use crate::pixel::PixelSampler;
 
 /// The renderer's tile side in pixels (its default `tile_size`).
 pub const DEFAULT_TILE_SIZE: u32 = 16;
