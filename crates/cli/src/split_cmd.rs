@@ -18,9 +18,9 @@ Merge the parts of a split render into one EXR.\n\
 Each part is an EXR written by `lowdisc render --pixel-bounds X0,X1,Y0,Y1`\n\
 and/or `--sample-range A..B`. The parts must come from the same scene (its\n\
 hash) and settings (sampler, seed, spp, threshold, maxdepth, light strategy,\n\
-tile size, resolution, film bounds); together they must cover a rectangle of\n\
-pixels, each pixel by sample ranges that follow each other without overlap or\n\
-gap. Any other input is refused with the part named, and nothing is written.\n\
+resolution, film bounds); together they must cover a rectangle of pixels,\n\
+each pixel by sample ranges that follow each other without overlap or gap.\n\
+Any other input is refused with the part named, and nothing is written.\n\
 \n\
 A merge of tiles is bit-identical to the single render (for every sampler);\n\
 sample ranges add each pixel's f64 sums in range order, which equals the\n\

@@ -32,6 +32,3 @@ pub use config::{MAX_RESOLUTION, SamplerConfig};
 pub use family::Family;
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
 pub use table::{Sampler, SamplerName};
-
-pub mod pixel_rows;
-pub use pixel_rows::{DEFAULT_TILE_SIZE, pixel_rows};

@@ -108,7 +108,6 @@ mod tests {
                 ..PathIntegrator::default()
             },
             threads: Some(1),
-            tile_size: 16,
             ..RenderOptions::new(SamplerName::SobolOwen, seed, 4)
         }
     }

@@ -44,7 +44,6 @@ fn mean(scene: &Scene, spp: u32, max_depth: u32, strategy: LightStrategy) -> f64
             ..PathIntegrator::default()
         },
         threads: Some(2),
-        tile_size: 16,
         ..RenderOptions::new(SamplerName::ZSobol, 3, spp)
     };
     let out = render(scene, &opts, &NoProgress).unwrap();

@@ -36,7 +36,6 @@ fn run(scene: &Scene, spp: u32, max_depth: u32, spectral: bool, threads: usize) 
             ..PathIntegrator::default()
         },
         threads: Some(threads),
-        tile_size: 8,
         spectral,
         ..RenderOptions::new(SamplerName::ZSobol, 5, spp)
     };

@@ -125,10 +125,9 @@ fn settings_of(params: &FilmParams, opts: &RenderOptions) -> BTreeMap<String, St
 }
 
 /// The settings of `opts` that change pixels, by name: the sampler, its
-/// seed, samples per pixel, threshold and paper-dimensions flag, the path
-/// tracer's depth and light strategy, and the tile size (the tile grid keys
-/// the paper's literal stream). Threads, window and sample range are not
-/// settings: parts differ in them.
+/// seed, samples per pixel, threshold and paper-dimensions flag, and the
+/// path tracer's depth and light strategy. Threads, window and sample range
+/// are not settings: parts differ in them.
 pub fn settings(opts: &RenderOptions) -> BTreeMap<String, String> {
     let s = &opts.sampler;
     [
@@ -139,7 +138,6 @@ pub fn settings(opts: &RenderOptions) -> BTreeMap<String, String> {
         ("paper_all_dims", s.paper_all_dims.to_string()),
         ("maxdepth", opts.integrator.max_depth.to_string()),
         ("light_strategy", format!("{:?}", opts.integrator.strategy)),
-        ("tile_size", opts.tile_size.to_string()),
         ("spectral", opts.spectral.to_string()),
     ]
     .into_iter()

@@ -116,7 +116,6 @@ pub(super) fn prepare(
             ..PathIntegrator::default()
         },
         threads: config.threads,
-        tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
         window: config.window,
         samples: config.samples,
         spectral: config.spectral,

@@ -1,5 +1,5 @@
 //! [`RenderOptions`]: what to render with (the pixel sampler's configuration,
-//! the path tracer, threads, tiles, and the part of the image and of the
+//! the path tracer, threads, and the part of the image and of the
 //! sample indices to render) and the one place their ranges are checked
 //! ([`RenderOptions::validate`]; the window is checked against the film by
 //! [`RenderOptions::window_in`]).
@@ -7,9 +7,9 @@
 //! The sampler's own fields (samples per pixel at least 1, the paper
 //! threshold in `[0, 1]`) are checked by [`SamplerConfig::validate`]; this
 //! module adds the renderer's bounds (at most [`MAX_SPP`] samples per pixel,
-//! [`MAX_DEPTH_LIMIT`] bounces, [`MAX_THREADS`] threads, tiles of at most
-//! [`MAX_TILE_SIZE`] pixels). Front ends call `validate` on the options they
-//! built; [`super::render`] calls it again before any work.
+//! [`MAX_DEPTH_LIMIT`] bounces, [`MAX_THREADS`] threads). Front ends call
+//! `validate` on the options they built; [`super::render`] calls it again
+//! before any work.
 
 use super::RenderError;
 use crate::film::PixelBounds;
@@ -20,8 +20,6 @@ use lowdisc::catalog::{SamplerConfig, SamplerName};
 pub const MAX_SPP: u32 = 1 << 24;
 /// The most worker threads accepted.
 pub const MAX_THREADS: usize = 1024;
-/// The largest tile side accepted.
-pub const MAX_TILE_SIZE: u32 = 4096;
 
 /// How to render.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -34,8 +32,6 @@ pub struct RenderOptions {
     pub integrator: PathIntegrator,
     /// Worker threads; `None` uses rayon's global pool (all cores).
     pub threads: Option<usize>,
-    /// Tile side in pixels.
-    pub tile_size: u32,
     /// The pixels to render, in full-image pixel coordinates, within the
     /// film's pixel bounds (the scene's crop); `None` renders them all. The
     /// tile grid and every tile's sampler stream stay those of the film's
@@ -92,13 +88,12 @@ impl std::fmt::Display for SampleRange {
 
 impl Default for RenderOptions {
     /// ZSobol, seed 0, 16 samples per pixel, the default path tracer, all
-    /// cores, 16-pixel tiles, every pixel and every sample, RGB.
+    /// cores, every pixel and every sample, RGB.
     fn default() -> Self {
         RenderOptions {
             sampler: SamplerConfig::new(SamplerName::ZSobol),
             integrator: PathIntegrator::default(),
             threads: None,
-            tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
             window: None,
             samples: None,
             spectral: false,
@@ -133,12 +128,6 @@ impl RenderOptions {
             return bad(format!(
                 "max depth {} exceeds {MAX_DEPTH_LIMIT}",
                 self.integrator.max_depth
-            ));
-        }
-        if self.tile_size == 0 || self.tile_size > MAX_TILE_SIZE {
-            return bad(format!(
-                "tile size {} must be between 1 and {MAX_TILE_SIZE}",
-                self.tile_size
             ));
         }
         if let Some(r) = self.samples {
