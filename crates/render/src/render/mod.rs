@@ -15,7 +15,7 @@
 //! `k` keeps stream `k`, so a pixel's sums in a window equal its sums in the
 //! whole render bit for bit: every sample goes to its own pixel only (see
 //! [`crate::film`]). Each tile takes the camera samples of its
-//! [`Walk`](lowdisc_tiles::Walk) and adds the ones it keeps to the film;
+//! [`Walk`] and adds the ones it keeps to the film;
 //! for a sampler whose values depend on the order of calls (the paper's
 //! literal stream) the walk replays the tile from its first pixel. Each
 //! pixel's sums over a sample range are added in index order from 0, so
