@@ -18,8 +18,8 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use lowdisc::catalog::{SamplerConfig, SamplerName};
-use lowdisc::pixel::{PixelSampler, Sampler};
+use lowdisc::catalog::{Sampler, SamplerConfig, SamplerName};
+use lowdisc::pixel::PixelSampler;
 use lowdisc_benches::clock::ThreadCpuTime;
 
 /// Image side in pixels.

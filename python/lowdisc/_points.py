@@ -92,13 +92,8 @@ def sampler_names() -> list[str]:
     return list(_lowdisc.sampler_names())
 
 
-#: The renderer's tile side in pixels (its default; ``lowdisc points --tile-size``).
-DEFAULT_TILE_SIZE: int = 16
-
-
 def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
-                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0,
-                  tile_size: int = DEFAULT_TILE_SIZE) -> np.ndarray:
+                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0) -> np.ndarray:
     """The samples the renderer's pixel sampler ``sampler`` gives ``pixels``.
 
     Returns a float32 array ``(len(pixels), spp, dims)``: for each pixel
@@ -106,11 +101,11 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
     index, columns 0-1 are the offset inside the pixel (``get_pixel_2d``),
     then ``get_2d`` pairs and, for an odd ``dims``, one last ``get_1d``: what
     ``lowdisc points --sampler NAME --pixel X,Y --spp SPP --res WxH
-    --dims DIMS-2 --tile-size T`` prints (as film positions ``x + offset``).
+    --dims DIMS-2`` prints (as film positions ``x + offset``).
 
-    The sampler is the renderer's: the full image is cut into square tiles
-    of ``tile_size`` pixels (the renderer's default 16), numbered row-major,
-    and each tile's index is its sampler stream. The ``paper`` sampler's
+    The sampler is the renderer's: the full image is cut into the renderer's
+    square tiles of 16 pixels, numbered row-major, and each tile's index is
+    its sampler stream. The ``paper`` sampler's
     single stream is replayed from the tile's first pixel, row by row, each
     earlier sample drawing ``dims`` values: the renderer's values exactly
     when each of its camera samples drew ``dims`` values (always for the
@@ -138,7 +133,6 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
         np.ascontiguousarray(array, dtype=np.uint32),
         _checks.integer(dims, "dims", low=2, high=2**32 - 1),
         _checks.seed(seed),
-        _checks.integer(tile_size, "tile_size", low=1, high=4096),
     )
 
 

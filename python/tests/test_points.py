@@ -115,28 +115,24 @@ def test_qmcpy_reproduces_lowdiscs_sobol_from_the_exported_matrices():
                           lowdisc.sobol(256, 5, order="natural"))
 
 
-def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed, tile_size):
-    tiles = [] if tile_size is None else ["--tile-size", str(tile_size)]
+def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed):
     out = subprocess.run(
         [str(binary), "points", "--sampler", sampler, "--pixel", f"{pixel[0]},{pixel[1]}",
          "--spp", str(spp), "--res", f"{res[0]}x{res[1]}", "--dims", str(extra),
-         "--seed", str(seed), *tiles],
+         "--seed", str(seed)],
         check=True, capture_output=True, text=True).stdout
     return np.array([[float(v) for v in line.split()] for line in out.splitlines()])
 
 
-@pytest.mark.parametrize("tile_size", [None, 4])
 @pytest.mark.parametrize("sampler", lowdisc.sampler_names())
-def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, sampler,
-                                                                    tile_size):
+def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, sampler):
     # Pixels in the first, a middle and the last (clipped) tile of the
-    # renderer's grid, at the default tile size and at 4.
+    # renderer's grid.
     pixels = [(0, 0), (5, 2), (17, 3), (39, 19)]
-    tiles = {} if tile_size is None else {"tile_size": tile_size}
-    got = lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, seed=3, **tiles)
+    got = lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, seed=3)
     assert got.shape == (4, 8, 7) and got.dtype == np.float32
     for p, pixel in enumerate(pixels):
-        rows = cli_pixel_rows(lowdisc_bin, sampler, pixel, 8, (40, 20), 5, 3, tile_size)
+        rows = cli_pixel_rows(lowdisc_bin, sampler, pixel, 8, (40, 20), 5, 3)
         expected = rows.copy()
         expected[:, :2] -= pixel  # the CLI prints film positions
         assert np.array_equal(got[p].astype(np.float64), expected), (sampler, pixel)
@@ -144,15 +140,10 @@ def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, s
 
 def test_the_paper_stream_is_the_tiles_not_the_pixels_own():
     # The literal stream is re-seeded per tile and runs through the tile's
-    # pixels: a pixel's values change with the tile size, and the first
-    # pixel of a tile starts the tile's stream (which differs per tile).
-    a = lowdisc.pixel_samples("paper", 4, (32, 32), [(1, 0)], 6, seed=2)
-    b = lowdisc.pixel_samples("paper", 4, (32, 32), [(1, 0)], 6, seed=2, tile_size=1)
-    assert not np.array_equal(a, b)
+    # pixels: the first pixel of a tile starts the tile's stream (which
+    # differs per tile).
     first = lowdisc.pixel_samples("paper", 4, (32, 32), [(0, 0), (16, 0)], 6, seed=2)
     assert not np.array_equal(first[0, :, 2:], first[1, :, 2:])
-    with pytest.raises(ValueError, match="tile_size"):
-        lowdisc.pixel_samples("paper", 4, (32, 32), [(0, 0)], 6, tile_size=0)
 
 
 def test_every_catalog_sampler_is_available():

@@ -80,8 +80,9 @@ pub struct ExperimentArgs {
     /// Standard deviation in pixels of the Gaussian of the blurred (perceptual) MSE.
     #[arg(long, value_name = "S", default_value_t = lowdisc_experiment::quality::DEFAULT_BLUR_SIGMA)]
     blur_sigma: f64,
-    /// Samplers to compare, comma-separated.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS)]
+    /// Samplers to compare, comma-separated (`--help` lists them all).
+    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS,
+          long_help = crate::sampler_help::sampler_list("Samplers to compare, comma-separated, of:", ""))]
     samplers: Vec<String>,
     /// Samples per pixel of every compared render [default: 16; --quick: 4].
     #[arg(long, value_name = "N")]

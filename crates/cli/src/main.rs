@@ -18,6 +18,7 @@
 //!   `experiment` (with `experiment_units`: plan, unit, merge, status): the
 //!   subcommands; the experiment itself is the library `lowdisc-experiment`;
 //! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
+//! - `sampler_help`: the sampler lists of `--help`, from the catalog's table;
 //! - `limits`: the default work and memory limits and their checks;
 //! - `output`: tabular output of points (text, CSV, u32, JSON);
 //! - `plots`: point-set scatter plots for `points --plot`;
@@ -42,6 +43,7 @@ mod points;
 mod progress;
 mod render_cmd;
 mod render_stats;
+mod sampler_help;
 mod spectrum;
 mod split_cmd;
 
@@ -62,7 +64,7 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Print (or plot) the points of a sequence, or the samples of one pixel.
-    #[command(long_about = points::LONG_ABOUT)]
+    #[command(long_about = points::long_about())]
     Points(points::PointsArgs),
     /// Draw the paper's figure: a 2x2-pixel image's samples, one panel per sampler.
     #[command(long_about = figure::LONG_ABOUT)]

@@ -11,29 +11,20 @@ use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_render::film::PixelBounds;
 use lowdisc_render::render::SampleRange;
 
-/// A sampler name, or an error listing every known name.
+/// A sampler name, or an error with the nearest known name (when one is
+/// close) and every known name.
 pub fn sampler_name(text: &str) -> Result<SamplerName> {
     SamplerName::from_str(text.trim()).map_err(|_| {
         let known: Vec<&str> = SamplerName::ALL.iter().map(|n| n.as_str()).collect();
+        let hint = match SamplerName::nearest(text.trim()) {
+            Some(n) => format!(" (did you mean `{n}`?)"),
+            None => String::new(),
+        };
         anyhow!(
-            "unknown sampler `{text}`; known samplers: {}",
+            "unknown sampler `{text}`{hint}; known samplers: {}",
             known.join(", ")
         )
     })
-}
-
-/// The long help of a `--sampler` option: every catalog name with its
-/// one-line description.
-pub fn sampler_list() -> String {
-    let width = SamplerName::ALL.iter().map(|n| n.as_str().len()).max();
-    let lines = SamplerName::ALL.iter().map(|n| {
-        let pad = width.unwrap_or(0);
-        format!("  {:pad$}  {}", n.as_str(), n.description())
-    });
-    format!(
-        "Sampler name, one of:\n{}",
-        lines.collect::<Vec<_>>().join("\n")
-    )
 }
 
 /// A paper-permutation threshold in `[0, 1]` (NaN rejected).

@@ -7,12 +7,11 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
-use lowdisc::catalog::pixel_rows::{self, pixel_rows};
-use lowdisc::catalog::{DEFAULT_TILE_SIZE, Order, SamplerConfig, generate_points};
-use lowdisc_render::render::MAX_TILE_SIZE;
+use lowdisc::catalog::{Family, Order, SamplerConfig, generate_points};
+use lowdisc_tiles::{pixel_draws, pixel_rows};
 
 use crate::output::{Format, TableWriter};
-use crate::{default_output, parse, plots};
+use crate::{default_output, parse, plots, sampler_help};
 
 /// Point order for the Sobol family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -31,43 +30,47 @@ pub const MAX_PIXEL_DIMS: u32 = 1 << 16;
 /// The most sampler draws of one pixel-mode request, replay included.
 const MAX_PIXEL_DRAWS: u64 = 1 << 32;
 
-/// The long help of `points` (`lowdisc points --help`).
-pub const LONG_ABOUT: &str = "\
+/// The long help of `points` (`lowdisc points --help`), with the names of
+/// each family from the catalog's table.
+pub fn long_about() -> String {
+    let sobol = sampler_help::names_where(Family::is_sobol, 8, 72);
+    let per_pixel = sampler_help::names_where(|f| f == Family::PerPixel, 1, 72);
+    format!(
+        "\
 Print points of a sequence, or the samples of one pixel.\n\
 \n\
 Sequence mode (default): prints the first N points of the sampler's\n\
 sequence in dimensions 0..D (or A..B), one point per line. The Sobol\n\
-family (sobol, sobol-xor, sobol-owen, sobol-fast-owen, sobol-lms, paper,\n\
-paper-repro)\n\
+family ({sobol})\n\
 prints in Gray-code order by default, so\n\
 `lowdisc points --sampler sobol --n 65536 --dims 1024 --format u32`\n\
 prints exactly scipy.stats.qmc.Sobol(1024, scramble=False, bits=32)\n\
 .random(65536) as the integers floor(x * 2^32). The per-pixel samplers\n\
-(padded-sobol, padded-sobol-lms, zsobol, sobol-burley, laine-karras,\n\
-sobol-pixel-xor, pmj02, pmj02bn, zsobol-4d, zsobol-joint, zorder-sz,\n\
-cascaded-sobol) print the samples of pixel (0,0) of a\n\
-1x1 image with N samples per pixel.\n\
+({per_pixel})\n\
+print the samples of pixel (0,0) of a 1x1 image with N samples per pixel.\n\
 \n\
 Pixel mode (--pixel X,Y): for each of the --spp samples of that pixel of a\n\
 --res image, prints the film position (X + ox, Y + oy), where (ox, oy) is\n\
 get_pixel_2d, followed by --dims further values taken as get_2d pairs (and\n\
 one get_1d for an odd last value), starting at sampler dimension 0, from\n\
-the sampler as the renderer uses it: the stream of the pixel's tile\n\
-(--tile-size, the renderer's default). The paper sampler's single stream\n\
-is replayed from the tile's first pixel, each earlier sample drawing as\n\
-many values as asked for here.\n\
+the sampler as the renderer uses it: the stream of the pixel's tile of the\n\
+renderer's grid (16-pixel squares). The paper sampler's single stream is\n\
+replayed from the tile's first pixel, each earlier sample drawing as many\n\
+values as asked for here.\n\
 \n\
 --plot FILE.png|FILE.svg draws instead of printing: the first two\n\
 dimensions of the points (with a grid of 2^ceil(m/2) x 2^floor(m/2) cells,\n\
 m = floor(log2 N): a (0,m,2)-net has one point per cell), or in pixel mode\n\
 the film positions inside the pixel.\n\
-";
+"
+    )
+}
 
 /// The arguments of `points`.
 #[derive(Debug, Args)]
 pub struct PointsArgs {
     /// Sampler name (`--help` lists them all).
-    #[arg(long, short = 's', value_name = "NAME", long_help = crate::parse::sampler_list())]
+    #[arg(long, short = 's', value_name = "NAME", long_help = sampler_help::sampler_list("Sampler name, one of:", ""))]
     sampler: String,
     /// Seed of every random choice.
     #[arg(long, default_value_t = 0)]
@@ -106,10 +109,6 @@ pub struct PointsArgs {
     /// Samples per pixel (pixel mode).
     #[arg(long, default_value_t = 16, requires = "pixel")]
     spp: u32,
-    /// Tile side of the renderer's grid (pixel mode): the `paper` sampler's
-    /// stream is the pixel's tile's, replayed from the tile's first pixel.
-    #[arg(long, value_name = "PIXELS", default_value_t = DEFAULT_TILE_SIZE, requires = "pixel")]
-    tile_size: u32,
     /// Image resolution (pixel mode) [default: 2x2].
     #[arg(
         long,
@@ -146,7 +145,6 @@ enum Mode {
     Pixel {
         pixel: [u32; 2],
         extra_dims: u32,
-        tile_size: u32,
     },
 }
 
@@ -192,25 +190,18 @@ impl PointsArgs {
             if self.plot.is_some() && self.spp > MAX_PLOT_POINTS {
                 bail!("--plot draws at most {MAX_PLOT_POINTS} points; lower --spp");
             }
-            if self.tile_size == 0 || self.tile_size > MAX_TILE_SIZE {
-                bail!("--tile-size must be between 1 and {MAX_TILE_SIZE}");
-            }
-            let draws = pixel_rows::pixel_draws(&sampler, pixel, extra_dims + 2, self.tile_size);
+            let draws = pixel_draws(&sampler, &sampler.build()?, pixel, extra_dims + 2);
             if draws > MAX_PIXEL_DRAWS {
                 bail!(
                     "pixel {},{} needs {draws} sampler draws (the {} stream is replayed from \
-                     its tile's first pixel); the limit is {MAX_PIXEL_DRAWS}: lower --tile-size, \
-                     --spp or --dims",
+                     its tile's first pixel); the limit is {MAX_PIXEL_DRAWS}: lower --spp or \
+                     --dims",
                     pixel[0],
                     pixel[1],
                     sampler.name.as_str()
                 );
             }
-            Mode::Pixel {
-                pixel,
-                extra_dims,
-                tile_size: self.tile_size,
-            }
+            Mode::Pixel { pixel, extra_dims }
         } else {
             let n = self.n.unwrap_or(16);
             if n == 0 {
@@ -270,14 +261,10 @@ pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
             }
             table.finish()?;
         }
-        Mode::Pixel {
-            pixel,
-            extra_dims,
-            tile_size,
-        } => {
+        Mode::Pixel { pixel, extra_dims } => {
             if let Some(path) = &config.plot {
                 let mut positions = Vec::with_capacity(config.sampler.spp as usize);
-                for_each_pixel_sample(&config.sampler, *pixel, 0, *tile_size, |row| {
+                for_each_pixel_sample(&config.sampler, *pixel, 0, |row| {
                     positions.push([row[0], row[1]]);
                     Ok(())
                 })?;
@@ -288,7 +275,7 @@ pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
             let mut columns = vec!["film_x".to_string(), "film_y".to_string()];
             columns.extend((0..*extra_dims).map(|d| format!("v{d}")));
             let mut table = TableWriter::new(out, config.format, &columns);
-            for_each_pixel_sample(&config.sampler, *pixel, *extra_dims, *tile_size, |row| {
+            for_each_pixel_sample(&config.sampler, *pixel, *extra_dims, |row| {
                 Ok(table.write_floats(row)?)
             })?;
             table.finish()?;
@@ -300,32 +287,24 @@ pub fn run(config: &PointsConfig, out: impl Write) -> Result<()> {
 /// Calls `row` with each sample of one pixel, sample indices `0..spp` in
 /// order: the film position, then `extra` values from get_2d pairs (get_1d
 /// for an odd last one), starting at sampler dimension 0, drawn as the
-/// renderer does with tiles of `tile_size` ([`pixel_rows`]).
+/// renderer does ([`pixel_rows`]).
 pub fn for_each_pixel_sample(
     config: &SamplerConfig,
     pixel: [u32; 2],
     extra: u32,
-    tile_size: u32,
     mut row: impl FnMut(&[f64]) -> Result<()>,
 ) -> Result<()> {
     let sampler = config.build()?;
     let mut values = Vec::with_capacity(2 + extra as usize);
     let mut result = Ok(());
-    pixel_rows(
-        config,
-        &sampler,
-        pixel,
-        2 + extra as usize,
-        tile_size,
-        |r| {
-            if result.is_ok() {
-                values.clear();
-                values.push(f64::from(pixel[0]) + f64::from(r[0]));
-                values.push(f64::from(pixel[1]) + f64::from(r[1]));
-                values.extend(r[2..].iter().map(|&v| f64::from(v)));
-                result = row(&values);
-            }
-        },
-    );
+    pixel_rows(config, &sampler, pixel, 2 + extra as usize, |r| {
+        if result.is_ok() {
+            values.clear();
+            values.push(f64::from(pixel[0]) + f64::from(r[0]));
+            values.push(f64::from(pixel[1]) + f64::from(r[1]));
+            values.extend(r[2..].iter().map(|&v| f64::from(v)));
+            result = row(&values);
+        }
+    });
     result
 }

@@ -19,7 +19,7 @@ Merge the parts of a split render into one EXR.\n\
 Each part is an EXR written by `lowdisc render --pixel-bounds X0,X1,Y0,Y1`\n\
 and/or `--sample-range A..B`. The parts must come from the same scene (its\n\
 hash) and settings (sampler, seed, spp, threshold, maxdepth, light strategy,\n\
-layered weight, tile size, spectral mode, film sensor, resolution, film\n\
+layered weight, spectral mode, film sensor, resolution, film\n\
 bounds); together they must cover a rectangle of pixels, each pixel by sample\n\
 ranges that follow each other without overlap or gap. Any other input is\n\
 refused with the part named, and nothing is written.\n\

@@ -26,9 +26,9 @@ use lowdisc_split::{NamedPart, RenderPart, merge};
 
 use crate::progress::samples;
 
-/// The rows of a render's tiles ([`crate::run::options`]' tile size): a band
-/// is whole rows of tiles.
-pub const BAND_ROWS: u32 = 16;
+/// The rows of a render's tiles ([`lowdisc_tiles::TILE_SIZE`]): a band is
+/// whole rows of tiles.
+pub const BAND_ROWS: u32 = lowdisc_tiles::TILE_SIZE;
 
 /// How a render is cut: `bands` x `ranges` pieces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

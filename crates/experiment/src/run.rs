@@ -117,7 +117,6 @@ pub fn options(
             ..PathIntegrator::default()
         },
         threads: config.threads,
-        tile_size: crate::cut::BAND_ROWS,
         spectral: config.spectral,
         ..RenderOptions::default()
     }

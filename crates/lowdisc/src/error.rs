@@ -38,7 +38,12 @@ pub enum Error {
         resolution: [u32; 2],
     },
     /// A sampler name that is not known.
-    UnknownSampler(alloc::string::String),
+    UnknownSampler {
+        /// The name given.
+        name: alloc::string::String,
+        /// The known name nearest to it, when one is close.
+        suggestion: Option<&'static str>,
+    },
 }
 
 impl fmt::Display for Error {
@@ -69,7 +74,13 @@ impl fmt::Display for Error {
                 "pixel ({}, {}) is outside the {}x{} image",
                 pixel[0], pixel[1], resolution[0], resolution[1]
             ),
-            Error::UnknownSampler(name) => write!(f, "unknown sampler `{name}`"),
+            Error::UnknownSampler { name, suggestion } => {
+                write!(f, "unknown sampler `{name}`")?;
+                match suggestion {
+                    Some(s) => write!(f, "; did you mean `{s}`?"),
+                    None => Ok(()),
+                }
+            }
         }
     }
 }

@@ -28,7 +28,8 @@
 //! * randomizations: [`scramble`] (digital shift, Owen, fast Owen), [`paper`]
 //!   (Song & Ro's permutation), [`hash`] and [`pcg`] (seeded randomness);
 //! * [`pixel`]: the pixel samplers a renderer drives; [`catalog`]: every
-//!   sampler by name, built from one configuration; [`error`].
+//!   sampler by name, declared in one table, and the enum over them built
+//!   from one configuration; [`error`].
 //!
 //! The crate is `no_std` (with `alloc`) when the default `std` feature is off.
 #![cfg_attr(not(feature = "std"), no_std)]

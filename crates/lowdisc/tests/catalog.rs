@@ -2,8 +2,8 @@
 //! and (in `catalog/pinned_points.rs`) pinned points for every name.
 
 use lowdisc::Error;
-use lowdisc::catalog::{Order, SamplerConfig, SamplerName, generate_points};
-use lowdisc::pixel::{PixelSampler, Sampler};
+use lowdisc::catalog::{Order, Sampler, SamplerConfig, SamplerName, generate_points};
+use lowdisc::pixel::PixelSampler;
 use lowdisc::sobol::{NUM_DIMENSIONS, gray_code, sample};
 
 #[path = "catalog/pinned_points.rs"]
@@ -29,11 +29,22 @@ fn names_round_trip_and_are_distinct() {
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
-        Err(Error::UnknownSampler("Sobol".into()))
+        Err(Error::UnknownSampler {
+            name: "Sobol".into(),
+            suggestion: Some("sobol")
+        })
     );
     assert_eq!(
         "".parse::<SamplerName>(),
-        Err(Error::UnknownSampler(String::new()))
+        Err(Error::UnknownSampler {
+            name: String::new(),
+            suggestion: None
+        })
+    );
+    let message = "zsobol-4D".parse::<SamplerName>().unwrap_err().to_string();
+    assert_eq!(
+        message,
+        "unknown sampler `zsobol-4D`; did you mean `zsobol-4d`?"
     );
 }
 

@@ -11,9 +11,10 @@
 //! project's notes are pinned below.
 
 use lowdisc::RandomizeStrategy;
+use lowdisc::catalog::Sampler;
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc::hash::mix64;
-use lowdisc::pixel::{PixelSampler, Sampler};
+use lowdisc::pixel::PixelSampler;
 use lowdisc::scramble::{fast_owen_key, fast_owen_scramble};
 use lowdisc::sobol::sample;
 use sobol_burley::parts::{owen_scramble_rev, sobol_rev};

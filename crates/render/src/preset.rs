@@ -116,7 +116,6 @@ mod tests {
                 ..PathIntegrator::default()
             },
             threads: Some(1),
-            tile_size: 16,
             ..RenderOptions::new(SamplerName::SobolOwen, seed, 4)
         }
     }

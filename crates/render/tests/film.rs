@@ -163,24 +163,6 @@ fn tiles_cover_the_bounds_once_in_row_major_order() {
     assert!(seen.iter().all(|&c| c == 1));
 }
 
-#[test]
-fn the_full_images_tiles_are_the_grid_of_the_pixel_samples_mode() {
-    // `lowdisc points --pixel` and Python's pixel_samples find a pixel's tile
-    // (its sampler stream) with lowdisc::catalog::pixel_rows::tile_of.
-    use lowdisc::catalog::pixel_rows::tile_of;
-    for (w, h, size) in [(37u32, 20u32, 16u32), (16, 16, 16), (5, 3, 1), (9, 40, 7)] {
-        let tiles = film(w, h).pixel_bounds().tiles(size);
-        for (k, t) in tiles.iter().enumerate() {
-            for p in t.pixels() {
-                let tile = tile_of([p[0] as u32, p[1] as u32], [w, h], size);
-                assert_eq!(tile.index, k as u64, "{w}x{h} tiles of {size}: {p:?}");
-                assert_eq!(tile.min, [t.min[0] as u32, t.min[1] as u32]);
-                assert_eq!(tile.max, [t.max[0] as u32, t.max[1] as u32]);
-            }
-        }
-    }
-}
-
 /// Deterministic samples for pixel `p`: several per pixel with varied weights.
 fn samples_for(p: [i32; 2], seed: u64) -> Vec<(Rgb, f32)> {
     let mut rng = Rng(seed ^ ((p[0] as u64) << 32) ^ p[1] as u64);

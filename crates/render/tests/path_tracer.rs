@@ -47,7 +47,6 @@ fn mean(scene: &Scene, view: &View, spp: u32, max_depth: u32, strategy: LightStr
             ..PathIntegrator::default()
         },
         threads: Some(2),
-        tile_size: 16,
         ..RenderOptions::new(SamplerName::ZSobol, 3, spp)
     };
     let out = render(scene, view, &opts, &NoProgress).unwrap();

@@ -25,7 +25,6 @@ fn opts(sampler: SamplerName, spp: u32, threads: usize) -> RenderOptions {
             ..PathIntegrator::default()
         },
         threads: Some(threads),
-        tile_size: 8,
         ..RenderOptions::new(sampler, 7, spp)
     }
 }
@@ -227,15 +226,15 @@ fn nonfinite_samples_are_counted_and_never_written() {
 
 #[test]
 fn progress_reports_every_tile_and_bad_options_are_errors() {
-    let (scene, view) = cornell_box([20, 10]).unwrap();
+    let (scene, view) = cornell_box([40, 20]).unwrap();
     let seen = Mutex::new(Vec::new());
     let sink = |p: Progress| seen.lock().unwrap().push(p);
     let out = render(&scene, &view, &opts(SamplerName::Independent, 1, 2), &sink).unwrap();
     let seen = seen.into_inner().unwrap();
-    assert_eq!(seen.len(), 6, "3x2 tiles of 8x8");
+    assert_eq!(seen.len(), 6, "3x2 tiles of 16x16");
     let last = seen.iter().max_by_key(|p| p.tiles_done).unwrap();
     assert_eq!((last.tiles_done, last.tiles_total), (6, 6));
-    assert_eq!(last.samples_done, 200);
+    assert_eq!(last.samples_done, 800);
     assert_eq!(last.rays, out.stats.rays);
     let with_threshold = |name, t| {
         let mut o = opts(name, 1, 1);
@@ -254,10 +253,6 @@ fn progress_reports_every_tile_and_bad_options_are_errors() {
         },
         RenderOptions {
             threads: Some(0),
-            ..opts(SamplerName::ZSobol, 1, 1)
-        },
-        RenderOptions {
-            tile_size: 0,
             ..opts(SamplerName::ZSobol, 1, 1)
         },
         with_threshold(SamplerName::PaperRepro, f64::NAN),

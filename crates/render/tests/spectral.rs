@@ -49,7 +49,6 @@ fn run(
             ..PathIntegrator::default()
         },
         threads: Some(threads),
-        tile_size: 8,
         spectral,
         ..RenderOptions::new(SamplerName::ZSobol, 5, spp)
     };

@@ -118,7 +118,6 @@ fn checkerboard_plane_in_a_furnace_shows_both_albedos() {
             ..PathIntegrator::default()
         },
         threads: Some(2),
-        tile_size: 8,
         ..RenderOptions::new(SamplerName::ZSobol, 11, 64)
     };
     let out = render(&scene, &view, &opts, &NoProgress).unwrap();

@@ -27,7 +27,6 @@ fn opts(sampler: SamplerName, seed: u64) -> RenderOptions {
             ..PathIntegrator::default()
         },
         threads: Some(1),
-        tile_size: 8,
         ..RenderOptions::new(sampler, seed, 4)
     }
 }

@@ -70,13 +70,12 @@ sampler); merged sample ranges equal it up to f64 rounding of the sums.\n\
 pub struct RenderArgs {
     /// A pbrt-v4 scene file (omit for the built-in Cornell box).
     scene: Option<PathBuf>,
-    /// Pixel sampler: independent, stratified, halton, halton-owen, sobol,
-    /// sobol-xor, sobol-owen, sobol-fast-owen, sobol-lms, paper,
-    /// paper-repro, padded-sobol, padded-sobol-lms, zsobol, sobol-burley,
-    /// laine-karras, sobol-pixel-xor, pmj02, pmj02bn, zsobol-4d,
-    /// zsobol-joint, zorder-sz, cascaded-sobol [default: the scene's, else
+    /// Pixel sampler (`--help` lists them all) [default: the scene's, else
     /// zsobol].
-    #[arg(long, short = 's', value_name = "NAME")]
+    #[arg(long, short = 's', value_name = "NAME", long_help = crate::sampler_help::sampler_list(
+        "Pixel sampler, one of:",
+        "[default: the scene's, else zsobol]",
+    ))]
     sampler: Option<String>,
     /// Samples per pixel [default: the scene's, else 16].
     #[arg(long, value_name = "N")]
@@ -234,7 +233,6 @@ impl RenderArgs {
             layered_exit_weight: Given::maybe(weight, "--layered-weight"),
             resolution: flag("--res", &self.res, parse::resolution)?,
             threads: Given::maybe(self.threads, "--threads"),
-            tile_size: None,
             window: flag("--pixel-bounds", &self.pixel_bounds, parse::pixel_bounds)?,
             samples: flag("--sample-range", &self.sample_range, parse::sample_range)?,
             spectral: self.spectral.then(|| Given::new(true, "--spectral")),

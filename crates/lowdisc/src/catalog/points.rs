@@ -1,41 +1,39 @@
 //! Points mode: the raw sequence behind each catalog name, as 32-bit digit
-//! words (`floor(x * 2^32)`), point-major.
+//! words (`floor(x * 2^32)`), point-major, made as the name's [`Family`]
+//! says:
 //!
-//! * `sobol*`: the Sobol sequence with that randomization (seeded by the
-//!   config seed). [`Order::Gray`] is the order of Joe & Kuo's generator and
-//!   `scipy.stats.qmc.Sobol` (point `k` is natural point `gray_code(k)`);
-//!   [`Order::Natural`] is `sobol::sample(k, d)`.
-//! * `paper`: the literal permuted Sobol over the same indices, with one
-//!   stream (seeded by the config seed) consumed point-major, dimensions in
-//!   the order of the range, so the words depend on the range asked for.
-//!   `paper-repro`: hashed draws, independent of the range and order.
-//! * `halton`, `halton-owen`: the Halton sequence with random digit
-//!   permutations / Owen scrambling; `independent`: stream = dimension,
-//!   offset = point index; `stratified`: `stratified::jittered_points` over
-//!   dimensions `0..end`, sliced to the range.
-//! * `padded-sobol`, `padded-sobol-lms`, `zsobol`, `sobol-burley`,
-//!   `laine-karras`, `sobol-pixel-xor`, `pmj02`, `pmj02bn`, `zsobol-4d`,
-//!   `zsobol-joint`, `zorder-sz` and `cascaded-sobol` are pixel samplers:
-//!   their points are the `n` samples of pixel (0,0) of a 1x1 image with
-//!   `spp = n`: dimensions 0-1 are the in-pixel offset, dimensions
-//!   `2j + 2, 2j + 3` the `get_2d` pair at sampler dimension `2j` (so a
-//!   dimension's value does not depend on the range asked for).
+//! * [`Family::Sobol`]: the Sobol sequence with that randomization (seeded
+//!   by the config seed). [`Order::Gray`] is the order of Joe & Kuo's
+//!   generator and `scipy.stats.qmc.Sobol` (point `k` is natural point
+//!   `gray_code(k)`); [`Order::Natural`] is `sobol::sample(k, d)`.
+//! * [`Family::PaperLiteral`]: the literal permuted Sobol over the same
+//!   indices, with one stream (seeded by the config seed) consumed
+//!   point-major, dimensions in the order of the range, so the words depend
+//!   on the range asked for. [`Family::PaperReproducible`]: hashed draws,
+//!   independent of the range and order.
+//! * [`Family::Halton`]: the Halton sequence with that randomization;
+//!   [`Family::Independent`]: stream = dimension, offset = point index;
+//!   [`Family::Stratified`]: `stratified::jittered_points` over dimensions
+//!   `0..end`, sliced to the range.
+//! * [`Family::PerPixel`]: the name's pixel sampler, built for a 1x1 image
+//!   with `spp = n`; the points are the `n` samples of pixel (0,0):
+//!   dimensions 0-1 are the in-pixel offset, dimensions `2j + 2, 2j + 3` the
+//!   `get_2d` pair at sampler dimension `2j` (so a dimension's value does
+//!   not depend on the range asked for).
 //!
 //! Only the Sobol family uses the order; the others ignore it.
 
 use alloc::vec::Vec;
 use core::ops::Range;
 
-use super::{SamplerConfig, SamplerName};
-use crate::halton::{self, Halton, HaltonRandomize};
+use super::config::SamplerConfig;
+use super::family::Family;
+use super::params::Params;
+use crate::halton::Halton;
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
-use crate::pixel::{
-    BurleySampler, CascadedSobolSampler, GroupLayout, NestedHash, PaddedSobolSampler,
-    PixelXorSampler, PmjSampler, WordSampler, ZOrderSzSampler, ZSobolJointSampler, ZSobolSampler,
-};
-use crate::pmj::PmjKind;
-use crate::sobol::{GrayCodeBatch, NUM_DIMENSIONS, gray_code, sample_randomized};
+use crate::pixel::WordSampler;
+use crate::sobol::{GrayCodeBatch, gray_code, sample_randomized};
 use crate::{Error, RandomizeStrategy, stratified};
 
 /// The most words one call may return (`n * dims.len()`), 1 GiB of output.
@@ -61,18 +59,14 @@ pub fn generate_points(
     dims: Range<u32>,
     order: Order,
 ) -> Result<Vec<u32>, Error> {
-    let name = config.name;
+    let family = config.name.family();
     if n == 0 {
         return Err(Error::InvalidSampleCount {
             count: 0,
             reason: "at least one point is needed",
         });
     }
-    let available = match name {
-        SamplerName::Halton | SamplerName::HaltonOwen => u64::from(halton::NUM_DIMENSIONS),
-        n if n.is_sobol_family() => NUM_DIMENSIONS as u64,
-        _ => u64::from(u32::MAX),
-    };
+    let available = family.dimensions();
     if dims.is_empty() || u64::from(dims.end) > available {
         let dimension = if dims.is_empty() {
             dims.start
@@ -98,18 +92,13 @@ pub fn generate_points(
         Order::Natural => k,
     };
     let mut out = Vec::with_capacity(n as usize * width);
-    match name {
-        SamplerName::Sobol if order == Order::Gray => {
+    match family {
+        Family::Sobol(RandomizeStrategy::None) if order == Order::Gray => {
             let mut batch = GrayCodeBatch::new(dims.start, width as u32)?;
             out.resize(n as usize * width, 0);
             batch.fill(&mut out);
         }
-        SamplerName::Sobol
-        | SamplerName::SobolXor
-        | SamplerName::SobolOwen
-        | SamplerName::SobolFastOwen
-        | SamplerName::SobolLms => {
-            let r = name.sobol_strategy().unwrap_or_default();
+        Family::Sobol(r) => {
             for k in 0..n {
                 out.extend(
                     dims.clone()
@@ -117,13 +106,13 @@ pub fn generate_points(
                 );
             }
         }
-        SamplerName::Paper => {
+        Family::PaperLiteral => {
             let mut stream = PaperLiteral::new(config.threshold, Some(seed))?;
             for k in 0..n {
                 out.extend(dims.clone().map(|d| stream.sample(index(k), d)));
             }
         }
-        SamplerName::PaperRepro => {
+        Family::PaperReproducible => {
             for k in 0..n {
                 out.extend(
                     dims.clone()
@@ -131,18 +120,13 @@ pub fn generate_points(
                 );
             }
         }
-        SamplerName::Halton | SamplerName::HaltonOwen => {
-            let kind = if name == SamplerName::Halton {
-                HaltonRandomize::PermuteDigits
-            } else {
-                HaltonRandomize::Owen
-            };
+        Family::Halton(kind) => {
             let seq = Halton::new(kind, seed);
             for k in 0..n {
                 out.extend(dims.clone().map(|d| seq.sample_word(u64::from(k), d)));
             }
         }
-        SamplerName::Independent => {
+        Family::Independent => {
             let seq = Independent::new(seed);
             for k in 0..n {
                 out.extend(
@@ -151,7 +135,7 @@ pub fn generate_points(
                 );
             }
         }
-        SamplerName::Stratified => {
+        Family::Stratified => {
             if u64::from(n) * u64::from(dims.end) > MAX_POINT_WORDS {
                 return Err(Error::InvalidSampleCount {
                     count: u64::from(n),
@@ -163,54 +147,18 @@ pub fn generate_points(
                 out.extend(point[dims.start as usize..].iter().map(|&x| word_of(x)));
             }
         }
-        SamplerName::PaddedSobol | SamplerName::PaddedSobolLms => {
-            let strategy = if name == SamplerName::PaddedSobol {
-                RandomizeStrategy::Owen
-            } else {
-                RandomizeStrategy::Lms
+        Family::PerPixel => {
+            let params = Params {
+                spp: n,
+                resolution: [1, 1],
+                ..config.params()
             };
-            let mut s = PaddedSobolSampler::new(n, strategy, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::ZSobol => {
-            let mut s = ZSobolSampler::new(n, [1, 1], RandomizeStrategy::FastOwen, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::SobolBurley | SamplerName::LaineKarras => {
-            let hash = if name == SamplerName::SobolBurley {
-                NestedHash::Vegdahl
-            } else {
-                NestedHash::LaineKarras
-            };
-            let mut s = BurleySampler::new(n, hash, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::SobolPixelXor => {
-            let mut s = PixelXorSampler::new(n, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::Pmj02 | SamplerName::Pmj02Bn => {
-            let kind = if name == SamplerName::Pmj02 {
-                PmjKind::Pmj02
-            } else {
-                PmjKind::Pmj02Bn
-            };
-            let mut s = PmjSampler::new(n, kind, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::ZSobol4d | SamplerName::ZSobolJoint => {
-            let layout = name.group_layout().unwrap_or(GroupLayout::Sequential);
-            let mut s =
-                ZSobolJointSampler::new(n, [1, 1], layout, RandomizeStrategy::FastOwen, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::ZOrderSz => {
-            let mut s = ZOrderSzSampler::new(n, [1, 1], RandomizeStrategy::FastOwen, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
-        }
-        SamplerName::CascadedSobol => {
-            let mut s = CascadedSobolSampler::new(n, RandomizeStrategy::FastOwen, seed)?;
-            pixel_points(&mut s, n, dims, &mut out);
+            let mut sampler = config.name.build(&params)?;
+            let words = sampler.words().ok_or(Error::InvalidSampleCount {
+                count: u64::from(n),
+                reason: "the sampler table marks this per-pixel sampler `values`, not `words`",
+            })?;
+            pixel_points(words, n, dims, &mut out);
         }
     }
     Ok(out)
@@ -222,7 +170,7 @@ fn word_of(x: f64) -> u32 {
 }
 
 /// The samples of pixel (0,0) as points (see the module documentation).
-fn pixel_points(s: &mut impl WordSampler, n: u32, dims: Range<u32>, out: &mut Vec<u32>) {
+fn pixel_points<S: WordSampler + ?Sized>(s: &mut S, n: u32, dims: Range<u32>, out: &mut Vec<u32>) {
     for k in 0..n {
         s.start_pixel_sample([0, 0], k, 0);
         let offset = s.get_pixel_2d_words();

@@ -46,8 +46,10 @@
 
 mod cache;
 mod digits;
+mod entry;
 
-use self::cache::{Cache, Layout};
+use self::cache::Cache;
+use self::entry::Layout;
 use super::{Dims, SEED_PAD, WordSampler};
 use crate::hash::hash_words;
 use crate::sobol::sample;

@@ -45,6 +45,9 @@ pub const TABLE_DIGITS: u32 = 12;
 pub(super) const LAYERS_TOTAL: usize = 32_usize.div_ceil(SUBTREE_DEPTH as usize);
 /// SplitMix64's increment (the golden ratio times `2^64`, odd).
 pub(super) const GAMMA: u64 = 0x9e37_79b9_7f4a_7c15;
+/// Dimensions per vector of the AVX-512 kernel: the key arrays of
+/// [`super::OwenTreePoints`] are padded to a multiple of it.
+pub(super) const LANES: usize = 8;
 /// Salt of the seed (so this scramble's randomness is not another's).
 const SALT: u64 = 0x6f77_656e_5f74_7265;
 

@@ -26,8 +26,7 @@
 use alloc::vec::Vec;
 use core::arch::x86_64::*;
 
-use super::owen_tree::{GAMMA, LAYERS_TOTAL, SUBTREE_DEPTH};
-use super::owen_tree_points::LANES;
+use super::owen_tree::{GAMMA, LANES, LAYERS_TOTAL, SUBTREE_DEPTH};
 use crate::hash::MIX64_MULTIPLIERS;
 
 /// Whether this CPU runs the kernel (every extension it uses).

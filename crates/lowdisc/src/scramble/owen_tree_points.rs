@@ -14,15 +14,11 @@
 
 use alloc::vec::Vec;
 
-use super::owen_tree::{OwenTreeKey, layers_of};
+use super::owen_tree::{LANES, OwenTreeKey, layers_of};
 
 /// Dimensions up to this get portable keys with the 4096-entry table (8 KiB
 /// each); beyond, the 64-entry one (the values are the same).
 const LARGE_TABLE_DIMENSIONS: u32 = 1024;
-
-/// Dimensions per vector of the AVX-512 kernel (the key arrays are padded
-/// to a multiple of it).
-pub(super) const LANES: usize = 8;
 
 /// The Owen tree scramble of dimensions `0..d` under one seed.
 #[derive(Debug, Clone)]

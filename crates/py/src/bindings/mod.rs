@@ -81,7 +81,6 @@ fn pixel_samples<'py>(
     pixels: &Bound<'py, PyAny>,
     dims: u32,
     seed: u64,
-    tile_size: u32,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
     let pixels: PyReadonlyArray2<u32> = arrays::contiguous_2d(pixels, "pixels")?;
     let shape = pixels.shape();
@@ -102,7 +101,6 @@ fn pixel_samples<'py>(
         pixels: list,
         dims,
         seed,
-        tile_size,
     };
     let values = py
         .detach(|| pixel::pixel_samples(&spec))

@@ -4,24 +4,22 @@
 //! For each pixel and each sample index `0..spp` (in order) the row is:
 //! columns 0-1 the in-pixel offset (`get_pixel_2d`), then `get_2d` pairs and,
 //! for an odd last column, one `get_1d`, from the sampler as the renderer
-//! uses it: the stream of the pixel's tile in the full image's grid of
-//! `tile_size` tiles ([`lowdisc::catalog::pixel_rows`]; the paper's literal
-//! stream is replayed from the tile's first pixel). This is exactly what
-//! `lowdisc points --sampler NAME --pixel X,Y --spp N --res WxH --dims D-2
-//! --tile-size T` prints (as film positions `X + offset`).
+//! uses it: the stream of the pixel's tile in the full image's grid
+//! ([`lowdisc_tiles::pixel_rows`]; the paper's literal stream is replayed
+//! from the tile's first pixel). This is exactly what `lowdisc points
+//! --sampler NAME --pixel X,Y --spp N --res WxH --dims D-2` prints (as film
+//! positions `X + offset`).
 
 use core::str::FromStr;
 
-use lowdisc::catalog::pixel_rows::{pixel_draws, pixel_rows};
 use lowdisc::catalog::{MAX_POINT_WORDS, SamplerConfig, SamplerName};
+use lowdisc_tiles::{pixel_draws, pixel_rows};
 use rayon::prelude::*;
 
 use super::{EngineError, Result};
 
 /// The most values of a sample after the pixel offset (as `lowdisc points`).
 pub const MAX_EXTRA_DIMS: u32 = 1 << 16;
-/// The largest tile side (the renderer's limit).
-pub const MAX_TILE_SIZE: u32 = 4096;
 /// The most sampler draws of one request, the paper stream's replays
 /// included.
 pub const MAX_DRAWS: u64 = 1 << 32;
@@ -46,8 +44,6 @@ pub struct PixelSpec {
     pub dims: u32,
     /// Seed of every random choice.
     pub seed: u64,
-    /// Side of the renderer's square tiles (whose index is the stream).
-    pub tile_size: u32,
 }
 
 /// The samples of `spec`, `pixels x spp x dims` values (row-major).
@@ -83,12 +79,6 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
             p[0], p[1]
         )));
     }
-    if spec.tile_size == 0 || spec.tile_size > MAX_TILE_SIZE {
-        return Err(EngineError::value(format!(
-            "tile_size must be between 1 and {MAX_TILE_SIZE}, got {}",
-            spec.tile_size
-        )));
-    }
     let row = spec.dims as usize;
     let per_pixel = spec.spp as usize * row;
     let total = (spec.pixels.len() as u64).saturating_mul(per_pixel as u64);
@@ -98,12 +88,12 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
         )));
     }
     let draws = spec.pixels.iter().fold(0u64, |sum, &p| {
-        sum.saturating_add(pixel_draws(&config, p, spec.dims, spec.tile_size))
+        sum.saturating_add(pixel_draws(&config, &sampler, p, spec.dims))
     });
     if draws > MAX_DRAWS {
         return Err(EngineError::value(format!(
             "the request needs {draws} sampler draws (the {} stream is replayed from each \
-             pixel's tile start), over {MAX_DRAWS}: lower tile_size or ask for fewer pixels",
+             pixel's tile start), over {MAX_DRAWS}: ask for fewer pixels or samples",
             spec.sampler
         )));
     }
@@ -115,7 +105,7 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
         .zip(spec.pixels.par_iter())
         .for_each(|(block, &pixel)| {
             let mut rows = block.chunks_exact_mut(row);
-            pixel_rows(&config, &sampler, pixel, row, spec.tile_size, |r| {
+            pixel_rows(&config, &sampler, pixel, row, |r| {
                 if let Some(dst) = rows.next() {
                     dst.copy_from_slice(r);
                 }
@@ -137,7 +127,6 @@ mod tests {
             pixels,
             dims,
             seed: 5,
-            tile_size: 16,
         }
     }
 
@@ -169,14 +158,20 @@ mod tests {
         (config.seed, config.spp, config.resolution) = (5, 8, [4, 3]);
         let s = config.build().unwrap();
         let mut want = Vec::new();
-        pixel_rows(&config, &s, [3, 0], 4, 16, |r| want.extend_from_slice(r));
+        pixel_rows(&config, &s, [3, 0], 4, |r| want.extend_from_slice(r));
         assert_eq!(
             pixel_samples(&spec("paper", vec![[3, 0]], 4)).unwrap(),
             want
         );
-        let mut one = spec("paper", vec![[3, 0]], 4);
-        one.tile_size = 1;
-        assert_ne!(pixel_samples(&one).unwrap(), want);
+        // Without the replay of pixels (0..3, 0) the stream gives other values.
+        let mut fresh = s.with_stream(0);
+        let mut alone = Vec::new();
+        for index in 0..8 {
+            fresh.start_pixel_sample([3, 0], index, 0);
+            alone.extend(fresh.get_pixel_2d());
+            alone.extend(fresh.get_2d());
+        }
+        assert_ne!(alone, want);
     }
 
     #[test]
@@ -194,9 +189,6 @@ mod tests {
         assert!(err(spec("nope", vec![], 2)).contains("unknown sampler \"nope\""));
         assert!(err(spec("sobol", vec![[4, 0]], 2)).contains("outside the 4x3 image"));
         assert!(err(spec("sobol", vec![], 1)).contains("dims must be between 2"));
-        let mut tiles = spec("sobol", vec![], 2);
-        tiles.tile_size = 0;
-        assert!(err(tiles).contains("tile_size must be between 1 and 4096"));
         let mut zero = spec("halton", vec![], 2);
         zero.spp = 0;
         assert!(err(zero).contains("at least one sample per pixel"));

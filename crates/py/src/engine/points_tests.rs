@@ -155,7 +155,6 @@ fn results_do_not_depend_on_the_thread_count() {
                 pixels: (0..4096).map(|k| [k % 64, k / 64]).collect(),
                 dims: 6,
                 seed: 2,
-                tile_size: 16,
             };
             (words(&s), super::super::pixel::pixel_samples(&p).unwrap())
         })

@@ -18,9 +18,7 @@
 //! for disjoint tiles into a fresh film each pixel receives exactly one
 //! addition, so the image is bit-identical whatever the merge order.
 
-mod bounds;
-
-pub use bounds::PixelBounds;
+pub use lowdisc_tiles::PixelBounds;
 
 use crate::spectrum::Rgb;
 use lowdisc_image::{ImageError, RgbImage, WriteOptions};

@@ -1,5 +1,6 @@
-//! The render loop: the image is cut into fixed square tiles, rendered in
-//! parallel with rayon, and merged in tile order.
+//! The render loop: the image is cut into the square tiles of
+//! [`lowdisc_tiles`], rendered in parallel with rayon, and merged in tile
+//! order.
 //!
 //! **Determinism.** Tile `k` (row-major order over the film's pixel bounds)
 //! gets its own copy of the pixel sampler, `sampler.with_stream(k)`, and its
@@ -13,12 +14,13 @@
 //! each. The tile grid is always that of the film's pixel bounds and tile
 //! `k` keeps stream `k`, so a pixel's sums in a window equal its sums in the
 //! whole render bit for bit: every sample goes to its own pixel only (see
-//! [`crate::film`]). A sampler whose values depend on the order of calls
-//! ([`Sampler::is_order_dependent`], the paper's literal mode) replays each
-//! touched tile from its first pixel up to the last sample needed, and the
-//! film keeps only the samples asked for. Each pixel's sums over a sample
-//! range are added in index order from 0, so merging ranges adds per-range
-//! sums: equal to the whole render's up to `f64` rounding (not bit for bit).
+//! [`crate::film`]). Each tile takes the camera samples of its
+//! [`Walk`] and adds the ones it keeps to the film;
+//! for a sampler whose values depend on the order of calls (the paper's
+//! literal stream) the walk replays the tile from its first pixel. Each
+//! pixel's sums over a sample range are added in index order from 0, so
+//! merging ranges adds per-range sums: equal to the whole render's up to
+//! `f64` rounding (not bit for bit).
 //!
 //! **Spectral mode** ([`RenderOptions::spectral`]): each camera sample
 //! draws one more dimension, the wavelength sample, first (dimension 0, as
@@ -37,7 +39,7 @@
 //! closure): the library itself never prints.
 
 pub use crate::error::RenderError;
-pub use crate::settings::ranges::{MAX_SPP, MAX_THREADS, MAX_TILE_SIZE};
+pub use crate::settings::ranges::{MAX_SPP, MAX_THREADS};
 pub use crate::settings::{RenderOptions, SampleRange};
 
 use crate::camera::camera_sample;
@@ -47,8 +49,9 @@ use crate::scene::Scene;
 use crate::spectrum::sensor::{output_matrix, sample_xyz};
 use crate::spectrum::{Rgb, SampledSpectrum, SampledWavelengths};
 use crate::view::View;
-use lowdisc::catalog::SamplerConfig;
-use lowdisc::pixel::{PixelSampler, Sampler};
+use lowdisc::catalog::{Sampler, SamplerConfig};
+use lowdisc::pixel::PixelSampler;
+use lowdisc_tiles::{Tile, Walk, tiles};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -177,10 +180,8 @@ pub fn render(
         warnings.push("the scene has no lights: the image is black".to_string());
     }
     // The whole film's tile grid, numbered before the window is applied.
-    let rects: Vec<(u64, PixelBounds)> = (full.tiles(opts.tile_size).into_iter())
-        .enumerate()
-        .filter(|(_, r)| r.intersect(&window).area() > 0)
-        .map(|(k, r)| (k as u64, r))
+    let rects: Vec<Tile> = tiles(full)
+        .filter(|t| t.bounds.intersect(&window).area() > 0)
         .collect();
     let total = Totals {
         tiles: rects.len(),
@@ -193,8 +194,8 @@ pub fn render(
     let run = || -> Vec<TileResult> {
         rects
             .par_iter()
-            .map(|&(k, rect)| {
-                let r = render_tile(scene, view, opts, &sampler, k, rect, film.tile(rect));
+            .map(|&tile| {
+                let r = render_tile(scene, view, opts, &sampler, tile, film.tile(tile.bounds));
                 total.finished(&r, progress);
                 r
             })
@@ -286,9 +287,8 @@ impl Totals {
     }
 }
 
-/// Renders the samples of `film` (the part of tile `rect` inside the window)
-/// with tile `k`'s sampler stream; an order-dependent sampler replays the
-/// tile from its first pixel.
+/// Renders the samples of `film` (the part of `tile` inside the window)
+/// with the tile's sampler stream, along the tile's walk.
 ///
 /// The loop is compiled for the default sampler and for `independent` on
 /// their own types, so that their calls inline into the integrator; every
@@ -299,27 +299,32 @@ fn render_tile(
     view: &View,
     opts: &RenderOptions,
     sampler: &Sampler,
-    k: u64,
-    rect: PixelBounds,
+    tile: Tile,
     film: FilmTile,
 ) -> TileResult {
-    let replay = sampler.is_order_dependent();
-    match sampler.with_stream(k) {
-        Sampler::ZSobol(s) => render_tile_with(scene, view, opts, s, replay, rect, film),
-        Sampler::Independent(s) => render_tile_with(scene, view, opts, s, replay, rect, film),
-        other => render_tile_with(scene, view, opts, other, replay, rect, film),
+    let range = opts.sample_range();
+    let walk = Walk::new(
+        tile.bounds,
+        film.bounds(),
+        range.start..range.end,
+        opts.sampler.spp,
+        sampler.is_order_dependent(),
+    );
+    match sampler.with_stream(tile.index) {
+        Sampler::ZSobol(s) => render_tile_with(scene, view, opts, s, walk, film),
+        Sampler::Independent(s) => render_tile_with(scene, view, opts, s, walk, film),
+        other => render_tile_with(scene, view, opts, other, walk, film),
     }
 }
 
-/// [`render_tile`] with a sampler of type `S`; `replay` is the sampler's
-/// [`Sampler::is_order_dependent`].
+/// [`render_tile`] with a sampler of type `S`: traces every camera sample
+/// of `walk` in order and adds the kept ones to `film`.
 fn render_tile_with<S: PixelSampler>(
     scene: &Scene,
     view: &View,
     opts: &RenderOptions,
     mut sampler: S,
-    replay: bool,
-    rect: PixelBounds,
+    walk: Walk,
     mut film: FilmTile,
 ) -> TileResult {
     let mut stats = PathStats::default();
@@ -329,32 +334,17 @@ fn render_tile_with<S: PixelSampler>(
         integrator: &opts.integrator,
         seed: opts.sampler.seed,
     };
-    let (kept, range) = (film.bounds(), opts.sample_range());
-    let (pixels, indices) = if replay {
-        (rect, SampleRange::all(opts.sampler.spp))
-    } else {
-        (kept, range)
-    };
-    let last = kept.max.map(|m| m - 1);
     let mut samples = 0;
-    for pixel in pixels.pixels() {
-        let keep_pixel = kept.contains(pixel);
-        for s in indices.start..indices.end {
-            if replay && pixel == last && s >= range.end {
-                break;
-            }
-            let (l, weight) = if opts.spectral {
-                trace_spectral_sample(&shot, &mut sampler, pixel, s, &mut stats)
-            } else {
-                trace_camera_sample(&shot, &mut sampler, pixel, s, &mut stats)
-            };
-            if keep_pixel && range.contains(s) {
-                film.add_sample(pixel, l, weight);
-                samples += 1;
-            }
-        }
-        if pixel == last {
-            break;
+    for visit in walk {
+        let (pixel, s) = (visit.pixel, visit.index);
+        let (l, weight) = if opts.spectral {
+            trace_spectral_sample(&shot, &mut sampler, pixel, s, &mut stats)
+        } else {
+            trace_camera_sample(&shot, &mut sampler, pixel, s, &mut stats)
+        };
+        if visit.keep {
+            film.add_sample(pixel, l, weight);
+            samples += 1;
         }
     }
     TileResult {

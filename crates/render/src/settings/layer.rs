@@ -56,8 +56,6 @@ pub struct SettingsLayer {
     pub resolution: Option<Given<[u32; 2]>>,
     /// Worker threads.
     pub threads: Option<Given<usize>>,
-    /// Tile side in pixels.
-    pub tile_size: Option<Given<u32>>,
     /// The pixels to render.
     pub window: Option<Given<PixelBounds>>,
     /// The sample indices to take.

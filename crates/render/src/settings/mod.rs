@@ -1,5 +1,5 @@
 //! Render settings, in one place: what a render is asked to do
-//! ([`RenderOptions`]: sampler, path tracer, threads, tiles, window, sample
+//! ([`RenderOptions`]: sampler, path tracer, threads, window, sample
 //! range, spectral mode), the film's resolution, their defaults
 //! ([`RenderOptions::default`], [`FilmParams::default`]) and the range of
 //! each ([`ranges`]).
@@ -82,7 +82,6 @@ impl Settings {
             sampler,
             integrator,
             threads: l.threads.map(|g| g.value).or(d.threads),
-            tile_size: value(&l.tile_size, d.tile_size),
             window: l.window.map(|g| g.value).or(d.window),
             samples: l.samples.map(|g| g.value).or(d.samples),
             spectral: value(&l.spectral, d.spectral),
@@ -99,7 +98,6 @@ fn check(l: &SettingsLayer) -> Result<(), RenderError> {
     named(&l.threshold, ranges::threshold)?;
     named(&l.max_depth, ranges::max_depth)?;
     named(&l.threads, ranges::threads)?;
-    named(&l.tile_size, ranges::tile_size)?;
     named(&l.resolution, ranges::resolution)?;
     named(&l.samples, |r| ranges::samples(r, spp))
 }
@@ -122,7 +120,6 @@ fn chosen(layers: &[&SettingsLayer]) -> SettingsLayer {
         layered_exit_weight: last(layers, |l| &l.layered_exit_weight),
         resolution: last(layers, |l| &l.resolution),
         threads: last(layers, |l| &l.threads),
-        tile_size: last(layers, |l| &l.tile_size),
         window: last(layers, |l| &l.window),
         samples: last(layers, |l| &l.samples),
         spectral: last(layers, |l| &l.spectral),

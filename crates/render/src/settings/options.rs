@@ -1,5 +1,5 @@
 //! [`RenderOptions`]: what to render with (the pixel sampler's configuration,
-//! the path tracer, threads, tiles, and the part of the image and of the
+//! the path tracer, threads, and the part of the image and of the
 //! sample indices to render), their defaults ([`RenderOptions::default`],
 //! the one place they are declared) and [`RenderOptions::validate`], which
 //! checks every field with [`super::ranges`] (the window is checked against
@@ -22,8 +22,6 @@ pub struct RenderOptions {
     pub integrator: PathIntegrator,
     /// Worker threads; `None` uses rayon's global pool (all cores).
     pub threads: Option<usize>,
-    /// Tile side in pixels.
-    pub tile_size: u32,
     /// The pixels to render, in full-image pixel coordinates, within the
     /// film's pixel bounds (the scene's crop); `None` renders them all. The
     /// tile grid and every tile's sampler stream stay those of the film's
@@ -80,13 +78,12 @@ impl std::fmt::Display for SampleRange {
 
 impl Default for RenderOptions {
     /// ZSobol, seed 0, 16 samples per pixel, the default path tracer, all
-    /// cores, 16-pixel tiles, every pixel and every sample, RGB.
+    /// cores, every pixel and every sample, RGB.
     fn default() -> Self {
         RenderOptions {
             sampler: SamplerConfig::new(SamplerName::ZSobol),
             integrator: PathIntegrator::default(),
             threads: None,
-            tile_size: lowdisc::catalog::DEFAULT_TILE_SIZE,
             window: None,
             samples: None,
             spectral: false,
@@ -115,7 +112,6 @@ impl RenderOptions {
         ranges::spp(s.spp)
             .and_then(|()| ranges::threshold(s.threshold))
             .and_then(|()| ranges::max_depth(self.integrator.max_depth))
-            .and_then(|()| ranges::tile_size(self.tile_size))
             .and_then(|()| self.samples.map_or(Ok(()), |r| ranges::samples(r, s.spp)))
             .and_then(|()| self.threads.map_or(Ok(()), ranges::threads))
             .map_err(RenderError::InvalidOptions)

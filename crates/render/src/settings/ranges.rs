@@ -10,8 +10,6 @@ use crate::render::SampleRange;
 pub const MAX_SPP: u32 = 1 << 24;
 /// The most worker threads accepted.
 pub const MAX_THREADS: usize = 1024;
-/// The largest tile side accepted.
-pub const MAX_TILE_SIZE: u32 = 4096;
 /// The largest image side accepted.
 pub const MAX_SIDE: u32 = 16_384;
 /// The most pixels accepted (a 16k x 16k image).
@@ -47,13 +45,6 @@ pub fn max_depth(d: u32) -> Check {
 pub fn threads(t: usize) -> Check {
     ok_if((1..=MAX_THREADS).contains(&t), || {
         format!("thread count {t} must be between 1 and {MAX_THREADS}")
-    })
-}
-
-/// A tile side in `1..=MAX_TILE_SIZE`.
-pub fn tile_size(s: u32) -> Check {
-    ok_if((1..=MAX_TILE_SIZE).contains(&s), || {
-        format!("tile size {s} must be between 1 and {MAX_TILE_SIZE}")
     })
 }
 
@@ -93,7 +84,6 @@ mod tests {
         assert!(threshold(f64::NAN).is_err() && threshold(1.5).is_err());
         assert!(max_depth(MAX_DEPTH_LIMIT).is_ok() && max_depth(MAX_DEPTH_LIMIT + 1).is_err());
         assert!(threads(0).is_err() && threads(MAX_THREADS + 1).is_err());
-        assert!(tile_size(0).is_err() && tile_size(MAX_TILE_SIZE).is_ok());
         assert!(resolution([0, 4]).is_err() && resolution([MAX_SIDE, 1]).is_ok());
         assert!(resolution([MAX_SIDE + 1, 1]).is_err());
         assert!(samples(SampleRange::new(2, 2), 4).is_err());

@@ -38,6 +38,7 @@ use alloc::boxed::Box;
 use alloc::vec::Vec;
 
 use super::digits::{PixelSteps, below_top, first_step, refresh};
+use super::entry::{Entry, Layout, NO_TAG, TOP_LEN, top_digits};
 use super::{LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
 use crate::hash::{hash_words, mix64};
@@ -53,67 +54,8 @@ const CACHED_KEYS: u64 = 1024;
 const LOWER_TABLE_BITS: u32 = 10;
 /// Entries of [`Cache::lower_words`].
 const LOWER_LEN: usize = 1 << LOWER_TABLE_BITS;
-/// [`Entry::tag`] of an entry the fast path must not use.
-pub(super) const NO_TAG: u64 = u64::MAX;
 /// [`Cache::tag`] when the layout has no fast path (no entry has this tag).
 const NO_FAST_PATH: u64 = u64::MAX - 1;
-
-/// The sampler constants the fast path needs.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Layout {
-    /// The sampler seed.
-    pub seed: u64,
-    /// The randomization strategy (seeded from `seed`).
-    pub strategy: RandomizeStrategy,
-    /// `m`: sample bits of the index.
-    pub log2_spp: u32,
-    /// Base-4 digits of the index (above the odd low bit, if any).
-    pub base4_digits: u32,
-}
-
-impl Layout {
-    /// The base-4 digits of the pixel's Morton code (`log2 R`).
-    pub fn pixel_digits(&self) -> u32 {
-        self.base4_digits - self.log2_spp.div_ceil(2)
-    }
-}
-
-/// What is known about one dimension key.
-#[derive(Debug, Clone)]
-pub(super) struct Entry {
-    /// The Morton code the pixel part is for while [`Cache::fast`] may use
-    /// the entry, else [`NO_TAG`].
-    pub tag: u64,
-    /// Sobol dimensions 0 (low half) and 1 (high half) of the low 32 bits
-    /// of the permuted pixel digits, bit-reversed (as
-    /// [`Cache::lower_words`]).
-    pub upper_words: u64,
-    /// Scramble keys ([`RandomizeStrategy::scramble_key`]) of the
-    /// per-dimension seeds of Sobol dimensions 0 and 1.
-    pub keys: [u32; 2],
-    /// The fast Owen hash's multipliers of `keys`.
-    pub multipliers: [u32; 2],
-    /// The permuted value of the [`TOP_DIGITS`] (or fewer, see
-    /// [`top_digits`]) highest sample digits, indexed by their value.
-    pub top: [u8; TOP_LEN],
-    /// Whether the pixel part is computed (for `code`).
-    pub valid: bool,
-    /// Morton code of the pixel the pixel part is for.
-    pub code: u64,
-    /// The permuted pixel digits, in place (index bits `>= m`).
-    pub upper: u64,
-    /// The permutation of every pixel digit `i` (its index into
-    /// [`super::BASE4_PERMUTATIONS`]), for `code`.
-    pub pixel_permutations: [u8; 32],
-    /// Every permuted pixel digit (`upper`, digit by digit).
-    pub pixel_digits: [u8; 32],
-    /// Whether `keys` is computed (for `high`).
-    pub seeded: bool,
-    /// Index bits above 31 the keys are for.
-    pub high: u64,
-    /// Key of the odd low bit's flip.
-    pub low_key: u64,
-}
 
 /// Per-key hashes and per-pixel parts; see the module documentation.
 #[derive(Debug, Clone)]
@@ -378,15 +320,4 @@ fn packed_reversed_words(index: u32) -> u64 {
 #[inline]
 pub(super) fn level(dim_seed: u64, i: u64) -> u64 {
     mix64(dim_seed ^ i.wrapping_mul(0x9e37_79b9_7f4a_7c15))
-}
-
-/// Sample digits (at most) that [`Entry::top`] permutes by lookup.
-const TOP_DIGITS: u32 = 4;
-/// Entries of [`Entry::top`]: `4^TOP_DIGITS`.
-pub(super) const TOP_LEN: usize = 1 << (2 * TOP_DIGITS);
-
-/// Sample digits in [`Entry::top`] for `m` sample bits.
-#[inline(always)]
-pub(super) fn top_digits(m: u32) -> u32 {
-    (m / 2).min(TOP_DIGITS)
 }

@@ -21,7 +21,7 @@
 //!   ([`mix64_from_product`]).
 
 use super::BASE4_PERMUTATIONS;
-use super::cache::{Entry, Layout, TOP_LEN, top_digits};
+use super::entry::{Entry, Layout, TOP_LEN, top_digits};
 use crate::hash::{MIX64_MULTIPLIERS, bounded, hash_words, mix64, mix64_from_product};
 use crate::pixel::SEED_PAD;
 use crate::scramble::{dimension_seed, fast_owen_multiplier};

@@ -1,5 +1,5 @@
 //! [`PixelBounds`]: half-open pixel rectangles, their pixels in row-major
-//! order and the fixed square tile grid the render loop cuts them into.
+//! order and square tile grids over them.
 
 /// A half-open rectangle of pixels `[min, max)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
