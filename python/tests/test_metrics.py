@@ -182,3 +182,12 @@ def test_discrepancy_refuses_work_above_max_work():
     with pytest.raises(ValueError, match="more than max_work"):
         lowdisc.discrepancy(x, max_work=1e6)
     assert lowdisc.discrepancy(x, max_work=None) == lowdisc.discrepancy(x)
+
+
+def test_patching_scipys_geometric_discrepancy_with_lowdiscs_does_not_loop(monkeypatch):
+    # lowdisc hands "mst" to scipy's function, bound when lowdisc was
+    # imported: replacing scipy's name by lowdisc's later cannot recurse.
+    x = np.random.default_rng(4).random((50, 3))
+    want = scipy_qmc.geometric_discrepancy(x, method="mst")
+    monkeypatch.setattr(scipy_qmc, "geometric_discrepancy", lowdisc.geometric_discrepancy)
+    assert scipy_qmc.geometric_discrepancy(x, method="mst") == want
