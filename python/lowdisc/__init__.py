@@ -3,19 +3,22 @@
 * Points: :func:`sobol` (exact Owen scrambling and more), :func:`halton`,
   :func:`independent`, :func:`stratified`, and :func:`pixel_samples`, the
   renderer's pixel samplers (every ``--sampler`` of the ``lowdisc`` CLI).
-* Metrics: :func:`discrepancy` and :func:`geometric_discrepancy` (scipy's
-  signatures and conventions), :func:`star_discrepancy` (exact),
-  :func:`star_bounds`, :func:`min_distance` (also toroidal),
-  :func:`power_spectrum`.
-* :mod:`lowdisc.qmc`: ``Sobol`` and ``Halton`` engines for
-  ``scipy.stats.qmc``.
+* Metrics: :func:`discrepancy`, :func:`update_discrepancy` and
+  :func:`geometric_discrepancy` (scipy's signatures and conventions),
+  :func:`star_discrepancy` (exact), :func:`star_bounds`,
+  :func:`min_distance` (also toroidal), :func:`power_spectrum`.
+* :mod:`lowdisc.qmc`: ``scipy.stats.qmc`` with lowdisc's ``Sobol`` and
+  ``Halton`` engines and metrics (``from lowdisc import qmc``).
 * Interop: :func:`sobol_matrices`, :func:`qmcpy_generating_matrices`.
 
-scipy is optional: only :mod:`lowdisc.qmc` (for its base class) and a few
-``geometric_discrepancy`` options use it.
+scipy is optional: only :mod:`lowdisc.qmc` (for its base class and the
+names it re-exports) and a few ``geometric_discrepancy`` options use it.
+The user guide is ``docs/guide/python.md``.
 """
 
+from . import qmc
 from ._metrics import (
+    DEFAULT_DISCREPANCY_WORK,
     DEFAULT_MAX_WORK,
     StarBounds,
     discrepancy,
@@ -26,10 +29,13 @@ from ._metrics import (
     star_bounds,
     star_discrepancy,
     star_work,
+    update_discrepancy,
 )
 from ._points import (
     HALTON_DIMENSIONS,
+    HALTON_SCRAMBLES,
     SOBOL_DIMENSIONS,
+    SOBOL_SCRAMBLES,
     halton,
     independent,
     pixel_samples,
@@ -43,9 +49,12 @@ from ._points import (
 __version__ = "0.1.0"
 
 __all__ = [
+    "DEFAULT_DISCREPANCY_WORK",
     "DEFAULT_MAX_WORK",
     "HALTON_DIMENSIONS",
+    "HALTON_SCRAMBLES",
     "SOBOL_DIMENSIONS",
+    "SOBOL_SCRAMBLES",
     "StarBounds",
     "discrepancy",
     "geometric_discrepancy",
@@ -55,6 +64,7 @@ __all__ = [
     "nearest_neighbour_distances",
     "pixel_samples",
     "power_spectrum",
+    "qmc",
     "qmcpy_generating_matrices",
     "sampler_names",
     "sobol",
@@ -63,4 +73,5 @@ __all__ = [
     "star_discrepancy",
     "star_work",
     "stratified",
+    "update_discrepancy",
 ]

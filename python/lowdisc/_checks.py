@@ -54,6 +54,34 @@ def dtype_name(dtype: npt.DTypeLike) -> str:
     return name
 
 
+def output(out: Any, shape: tuple[int, ...], dtype: npt.DTypeLike | None) -> np.ndarray:
+    """The array to write ``shape`` values into: a new one of ``dtype``
+    (``None``: float64), or ``out`` after checking that it is a writeable,
+    C-contiguous numpy array of that shape whose dtype is float64, float32
+    or uint32 (and ``dtype``, if given)."""
+    if out is None:
+        return np.empty(shape, dtype=dtype_name(np.float64 if dtype is None else dtype))
+    if not isinstance(out, np.ndarray):
+        raise TypeError(f"out must be a numpy array, got {type(out).__name__}")
+    name = dtype_name(out.dtype)
+    if dtype is not None and dtype_name(dtype) != name:
+        raise TypeError(f"out has dtype {name} but dtype={np.dtype(dtype).name} was asked for")
+    if out.shape != shape:
+        raise ValueError(f"out must have shape {shape}, got {out.shape}")
+    if not out.flags.c_contiguous or not out.flags.writeable:
+        raise ValueError("out must be a writeable, C-contiguous array")
+    return out
+
+
+def replication_seeds(seed: int, replications: int) -> list[int]:
+    """The seeds of ``replications`` independent randomizations: ``seed``
+    itself first, then ``SeedSequence(seed, spawn_key=(r,))``'s first
+    64-bit word for ``r = 1, 2, ...``."""
+    words = [int(np.random.SeedSequence(seed, spawn_key=(r,)).generate_state(1, np.uint64)[0])
+             for r in range(1, replications)]
+    return [seed, *words]
+
+
 def sample(sample: npt.ArrayLike, *, scipy_messages: bool = True) -> np.ndarray:
     """A 2-D sample in the unit hypercube as a C-contiguous float64 array.
 

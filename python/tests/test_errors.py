@@ -15,14 +15,29 @@ from lowdisc import _lowdisc
     (lambda: lowdisc.sobol(-1, 2), ValueError, "n must be at least 0, got -1"),
     (lambda: lowdisc.sobol(2.5, 2), TypeError, "n must be an integer, got float"),
     (lambda: lowdisc.sobol(4, 21202), ValueError, "21201 dimensions"),
-    (lambda: lowdisc.sobol(4, 0), ValueError, "d must be between 1"),
-    (lambda: lowdisc.halton(4, 1025), ValueError, "1024 dimensions"),
-    (lambda: lowdisc.sobol(4, 2, scramble="lms"), ValueError, "scramble must be one of"),
+    (lambda: lowdisc.sobol(4, -1), ValueError, "d must be between 0"),
+    (lambda: lowdisc.halton(4, 6543), ValueError, "6542 dimensions"),
+    (lambda: lowdisc.sobol(4, 2, scramble="owen-per-digit"), ValueError,
+     "scramble must be one of"),
+    (lambda: lowdisc.halton(4, 2, scramble="lms"), ValueError, "scramble must be one of"),
     (lambda: lowdisc.sobol(4, 2, order="random"), ValueError, "order must be one of"),
     (lambda: lowdisc.sobol(4, 2, dtype=np.int8), TypeError, "dtype must be float64"),
     (lambda: lowdisc.sobol(4, 2, seed=-1), ValueError, "seed must be between 0"),
     (lambda: lowdisc.sobol(4, 2, start=2**32), ValueError, r"2\^32 points"),
-    (lambda: lowdisc.sobol(2**20, 2**10), ValueError, "generate in batches"),
+    (lambda: lowdisc.sobol(2**40, 2**10), MemoryError, "Unable to allocate"),
+    (lambda: lowdisc.sobol(4, 2, out=np.empty((4, 3))), ValueError,
+     r"out must have shape \(4, 2\)"),
+    (lambda: lowdisc.sobol(4, 2, out=np.empty((4, 2), dtype=np.int64)), TypeError,
+     "dtype must be float64"),
+    (lambda: lowdisc.sobol(4, 2, out=np.empty((2, 4)).T), ValueError, "C-contiguous"),
+    (lambda: lowdisc.sobol(4, 2, dtype=np.float32, out=np.empty((4, 2))), TypeError,
+     "dtype=float32 was asked for"),
+    (lambda: lowdisc.sobol(4, 2, replications=0), ValueError,
+     "replications must be at least 1"),
+    (lambda: lowdisc.discrepancy(np.zeros((1000, 10)), max_work=1e6), ValueError,
+     "more than max_work"),
+    (lambda: lowdisc.update_discrepancy([0.5], [[0.2, 0.3]], 0.1), ValueError,
+     "broadcastable"),
     (lambda: lowdisc.stratified(0, 2), ValueError, "1 <= n"),
     (lambda: lowdisc.pixel_samples("nope", 4, (2, 2), [(0, 0)]), ValueError,
      "unknown sampler"),
@@ -73,10 +88,19 @@ def test_the_extension_checks_arrays_itself():
         _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 2), dtype=np.int64), 2, 0, 16)
     with pytest.raises(ValueError, match=r"shape \(p, 2\)"):
         _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 3), dtype=np.uint32), 2, 0, 16)
+    out = np.empty((1, 2))
     with pytest.raises(OverflowError):
-        _lowdisc.points("sobol", -1, 2, 0, "gray", "none", 0, 32, "float64")
+        _lowdisc.points_into(out, "sobol", -1, "gray", "none", 0, 32)
     with pytest.raises(ValueError, match="unknown sequence"):
-        _lowdisc.points("sobel", 1, 2, 0, "gray", "none", 0, 32, "float64")
+        _lowdisc.points_into(out, "sobel", 0, "gray", "none", 0, 32)
+    with pytest.raises(TypeError, match="out must have dtype float64, float32 or uint32"):
+        _lowdisc.points_into(out.astype(np.int16), "sobol", 0, "gray", "none", 0, 32)
+    with pytest.raises(ValueError, match="2-D"):
+        _lowdisc.points_into(np.empty(3), "sobol", 0, "gray", "none", 0, 32)
+    with pytest.raises(ValueError, match="writeable"):
+        frozen = np.empty((2, 2))
+        frozen.flags.writeable = False
+        _lowdisc.points_into(frozen, "sobol", 0, "gray", "none", 0, 32)
 
 
 def test_non_contiguous_input_is_copied_by_the_package():
@@ -86,5 +110,6 @@ def test_non_contiguous_input_is_copied_by_the_package():
 
 def test_empty_requests_give_empty_arrays():
     assert lowdisc.sobol(0, 3).shape == (0, 3)
+    assert lowdisc.halton(5, 0).shape == (5, 0)
     assert lowdisc.pixel_samples("zsobol", 2, (2, 2), np.zeros((0, 2), dtype=int), 4).shape \
         == (0, 2, 4)

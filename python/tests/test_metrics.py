@@ -150,3 +150,44 @@ def test_discrepancy_is_the_same_bits_for_every_worker_count(method):
     for bad in (0, -2):
         with pytest.raises(ValueError, match="Invalid number of workers"):
             lowdisc.discrepancy(x, method=method, workers=bad)
+
+
+def test_a_long_discrepancy_stops_at_ctrl_c():
+    # A pair sum of about a minute, interrupted after one second: the
+    # interpreter gets KeyboardInterrupt within a few seconds.
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    script = ("import numpy as np, lowdisc\n"
+              "x = np.random.default_rng(0).random((120_000, 8))\n"
+              "print('start', flush=True)\n"
+              "lowdisc.discrepancy(x, max_work=None, workers=-1)\n"
+              "print('finished')\n")
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+    assert child.stdout.readline() == "start\n"
+    time.sleep(1.0)
+    child.send_signal(signal.SIGINT)
+    sent = time.monotonic()
+    out, err = child.communicate(timeout=60)
+    assert "KeyboardInterrupt" in err, err
+    assert "finished" not in out
+    assert time.monotonic() - sent < 5
+
+
+def test_discrepancy_refuses_work_above_max_work():
+    x = np.random.default_rng(1).random((2000, 4))
+    with pytest.raises(ValueError, match="more than max_work"):
+        lowdisc.discrepancy(x, max_work=1e6)
+    assert lowdisc.discrepancy(x, max_work=None) == lowdisc.discrepancy(x)
+
+
+def test_patching_scipys_geometric_discrepancy_with_lowdiscs_does_not_loop(monkeypatch):
+    # lowdisc hands "mst" to scipy's function, bound when lowdisc was
+    # imported: replacing scipy's name by lowdisc's later cannot recurse.
+    x = np.random.default_rng(4).random((50, 3))
+    want = scipy_qmc.geometric_discrepancy(x, method="mst")
+    monkeypatch.setattr(scipy_qmc, "geometric_discrepancy", lowdisc.geometric_discrepancy)
+    assert scipy_qmc.geometric_discrepancy(x, method="mst") == want

@@ -1,4 +1,4 @@
-//! The Halton sequence (at least 1,000 dimensions), unscrambled, with random
+//! The Halton sequence (6,542 dimensions: every prime base below `2^16`), unscrambled, with random
 //! digit permutations, or Owen-scrambled.
 //!
 //! Dimension `d` is the radical inverse in base `b = PRIMES[d]` (dimension 0 is
@@ -12,16 +12,26 @@
 //!   dimension `d` gets its own uniformly random permutation `pi_{d,i}` of
 //!   `0..b` (Fisher-Yates from a PCG32 stream seeded by the seed and `d`), and
 //!   the value is `sum_i pi_{d,i}(a_i) b^-(i+1)`.
-//! * `Owen`: nested scrambling in base `b`: the permutation applied to digit
-//!   `i` is keyed by a hash chain over the seed, `d` and the index digits
-//!   `a_0..a_{i-1}` before it, so points that share a prefix share the
-//!   permutation and all others get independent ones. The permutations are
-//!   the affine maps `a -> (m a + c) mod b` with `m` uniform in `1..b` and `c`
-//!   uniform in `0..b` (`b` is prime, so these are bijections). This family is
-//!   sharply 2-transitive: one digit maps to a uniform digit and two distinct
-//!   digits to a uniform pair of distinct digits, which is all the pairwise
-//!   (variance) behaviour of nested uniform scrambling depends on; for bases
-//!   2 and 3 it is the whole symmetric group.
+//! * `Owen`: Owen's nested uniform scrambling in base `b`: the permutation
+//!   applied to digit `i` is keyed by a hash chain over the seed, `d` and the
+//!   index digits `a_0..a_{i-1}` before it, so points that share a prefix
+//!   share the permutation and all others get independent ones, and each
+//!   permutation is uniform over all `b!` permutations of `0..b`. The image
+//!   of a digit `a` is read from a Fisher-Yates shuffle keyed by the node
+//!   (step `t` swaps position `t` with `t + bounded(hash, b - t)`) by tracing
+//!   position `a` back through steps `a, a-1, .., 0`: `a + 1` hashes, no
+//!   table. Each draw is uniform up to the `b / 2^64` bias of a 64-bit
+//!   multiply-shift.
+//! * `NestedAffine`: the same nesting and key chain, but each permutation is
+//!   the affine map `a -> (m a + c) mod b` with `m` uniform in `1..b` and `c`
+//!   uniform in `0..b` (`b` is prime, so these are bijections): one hash per
+//!   digit. The family is sharply 2-transitive (one digit maps to a uniform
+//!   digit, two distinct digits to a uniform pair of distinct digits), which
+//!   gives Owen's variance, but it maps arithmetic progressions of digits to
+//!   arithmetic progressions, so its point sets are not Owen's in
+//!   distribution beyond pairs. For bases 2 and 3 the affine maps are the
+//!   whole symmetric group, and `Owen` uses them there too: in dimensions 0
+//!   and 1 the two variants give the same values.
 //!
 //! ## The infinite tail of zero digits
 //! An index has finitely many nonzero digits, but its radical inverse has
@@ -44,8 +54,10 @@
 //!
 //! Cost: the digits are handled in 32-bit chunks (two 64-bit divisions per
 //! chunk, multiply-shift divisions by the base), so `None` and
-//! `PermuteDigits` cost a few tens of nanoseconds; `Owen` adds one 64-bit
-//! hash per scrambled digit (64 in base 2, 41 in base 3, 5 in base 8161).
+//! `PermuteDigits` cost a few tens of nanoseconds; `NestedAffine` adds one
+//! 64-bit hash per scrambled digit (64 in base 2, 41 in base 3, 5 in base
+//! 8161) and `Owen` `a + 2` hashes per digit `a` (zero digits, the tail,
+//! cost 2; on average about `b / 2` per nonzero digit).
 //!
 //! Permutation tables are built lazily, one dimension at a time on first use,
 //! and shared between clones (with the `std` feature; without it they are
@@ -60,7 +72,7 @@ mod tests;
 pub use primes::{NUM_DIMENSIONS, PRIMES, prime, scrambled_digits};
 
 use crate::Error;
-use crate::hash::{hash2, mix64};
+use crate::hash::{bounded, hash2, mix64};
 use crate::scramble::derive_seed;
 use digits::{BASES, Base, MAX_DIGITS};
 
@@ -75,16 +87,20 @@ pub enum HaltonRandomize {
     None,
     /// Random digit permutations, one per dimension and digit position.
     PermuteDigits,
-    /// Nested (Owen) scrambling in base `b`.
+    /// Owen's nested uniform scrambling in base `b`.
     Owen,
+    /// Nested scrambling by random affine digit maps (not Owen's law
+    /// beyond pairs of points; see the module documentation).
+    NestedAffine,
 }
 
 impl HaltonRandomize {
     /// All randomizations, in declaration order.
-    pub const ALL: [HaltonRandomize; 3] = [
+    pub const ALL: [HaltonRandomize; 4] = [
         HaltonRandomize::None,
         HaltonRandomize::PermuteDigits,
         HaltonRandomize::Owen,
+        HaltonRandomize::NestedAffine,
     ];
 
     /// The randomization called `name` (as [`HaltonRandomize::name`] gives
@@ -93,12 +109,13 @@ impl HaltonRandomize {
         Self::ALL.into_iter().find(|r| r.name() == name)
     }
 
-    /// A short name: `none`, `permute` or `owen`.
+    /// A short name: `none`, `permute`, `owen` or `nested-affine`.
     pub fn name(self) -> &'static str {
         match self {
             HaltonRandomize::None => "none",
             HaltonRandomize::PermuteDigits => "permute",
             HaltonRandomize::Owen => "owen",
+            HaltonRandomize::NestedAffine => "nested-affine",
         }
     }
 }
@@ -132,7 +149,7 @@ impl Halton {
         let derived_seed = match randomize {
             HaltonRandomize::None => 0,
             HaltonRandomize::PermuteDigits => derive_seed(seed, SALT_PERMUTE),
-            HaltonRandomize::Owen => derive_seed(seed, SALT_OWEN),
+            HaltonRandomize::Owen | HaltonRandomize::NestedAffine => derive_seed(seed, SALT_OWEN),
         };
         Halton {
             randomize,
@@ -195,6 +212,12 @@ impl Halton {
         Ok(self.sample_word(index, dim))
     }
 
+    /// The first key of dimension `dim`'s nested scramble chain.
+    #[inline]
+    fn dim_key(&self, dim: u32) -> u64 {
+        hash2(self.derived_seed, u64::from(dim))
+    }
+
     /// `floor(x * 2^64)` for point `index` of dimension `dim`, exact.
     ///
     /// # Panics
@@ -208,7 +231,8 @@ impl Halton {
                 self.tables
                     .with_dimension(seed, dim, |tables| permuted(index, base, tables))
             }
-            HaltonRandomize::Owen => owen(index, base, hash2(self.derived_seed, u64::from(dim))),
+            HaltonRandomize::Owen => nested(index, base, self.dim_key(dim), uniform_image),
+            HaltonRandomize::NestedAffine => nested(index, base, self.dim_key(dim), affine_image),
         }
     }
 }
@@ -272,14 +296,16 @@ fn next_key(key: u64, digit: u32) -> u64 {
     mix64(key ^ u64::from(digit + 1).wrapping_mul(0x9e37_79b9_7f4a_7c15))
 }
 
-/// Digits of `index` scrambled by nested affine permutations (see the
-/// module documentation). `key` is the per-dimension seed; it is extended by
-/// a hash chain over the digits, so the key of position `i` depends on the
-/// seed and on exactly the digits `a_0..a_{i-1}`. From a key, the pair
-/// `(m - 1, c)` is `floor(key * b (b - 1) / 2^64)` split as `(q, r)` by `b`.
-fn owen(index: u64, base: &Base, mut key: u64) -> u64 {
+/// Digits of `index` scrambled by nested permutations (see the module
+/// documentation). `key` is the per-dimension seed; it is extended by a hash
+/// chain over the digits, so the key of position `i` depends on the seed and
+/// on exactly the digits `a_0..a_{i-1}`. `image(key, base, digit)` is the
+/// image of `digit` under the permutation of the node with that key.
+#[inline]
+fn nested(index: u64, base: &Base, mut key: u64, image: fn(u64, &Base, u32) -> u32) -> u64 {
     if base.b == 2 {
-        // m = 1 and c = the key's top bit: digit i is flipped by it.
+        // The only nontrivial permutation of {0, 1} is the flip; both
+        // variants flip digit i when the node key's top bit is set.
         let mut out = 0u64;
         for i in 0..64 {
             let digit = ((index >> i) & 1) as u32;
@@ -288,20 +314,56 @@ fn owen(index: u64, base: &Base, mut key: u64) -> u64 {
         }
         return out;
     }
-    let b = base.b;
-    let choices = u128::from(b * (b - 1));
     let mut digits = [0u32; MAX_DIGITS];
     base.digits(index, &mut digits);
     let k = base.scrambled as usize;
     for d in digits[..k].iter_mut() {
-        let pick = ((u128::from(key) * choices) >> 64) as u32;
-        let q = base.div(pick);
-        let (mult, add) = (1 + q, pick - q * b);
         let digit = *d;
-        *d = base.rem(mult * digit + add);
+        *d = image(key, base, digit);
         key = next_key(key, digit);
     }
     base.fixed64(&digits[..k])
+}
+
+/// The image of `digit` under the affine map `a -> (m a + c) mod b` of the
+/// node `key`: the pair `(m - 1, c)` is `floor(key * b (b - 1) / 2^64)` split
+/// as `(q, r)` by `b`.
+#[inline]
+fn affine_image(key: u64, base: &Base, digit: u32) -> u32 {
+    let b = base.b;
+    let pick = ((u128::from(key) * u128::from(b * (b - 1))) >> 64) as u32;
+    let q = base.div(pick);
+    let (mult, add) = (1 + q, pick - q * b);
+    base.rem(mult * digit + add)
+}
+
+/// Salt of the shuffle keys, separating them from the chain's next keys.
+const SALT_SHUFFLE: u64 = 0x5348_5546_464c_4521; // "SHUFFLE!"
+
+/// The image of `digit` under the uniformly random permutation of the node
+/// `key`: the Fisher-Yates shuffle whose step `t` swaps positions `t` and
+/// `j_t = t + bounded(h_t, b - t)` leaves at position `digit` the value
+/// found by tracing that position back through steps `digit, .., 0` (later
+/// steps never touch it). Bases 2 and 3 use the affine maps, which are all
+/// of their permutations, each equally likely.
+#[inline]
+fn uniform_image(key: u64, base: &Base, digit: u32) -> u32 {
+    let b = base.b;
+    if b <= 3 {
+        return affine_image(key, base, digit);
+    }
+    let shuffle = mix64(key ^ SALT_SHUFFLE);
+    let mut pos = digit;
+    for t in (0..=digit).rev() {
+        let h = mix64(shuffle.wrapping_add(u64::from(t + 1).wrapping_mul(0x9e37_79b9_7f4a_7c15)));
+        let j = t + bounded(h, u64::from(b - t)) as u32;
+        if pos == t {
+            pos = j;
+        } else if pos == j {
+            pos = t;
+        }
+    }
+    pos
 }
 
 /// A 64-bit fixed-point fraction to the nearest `f64`, kept below 1.

@@ -72,7 +72,7 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     ),
     (
         SamplerName::HaltonOwen,
-        [0.60834163, 0.5105626, 0.12933487, 0.48620975, 0.9102565],
+        [0.60834163, 0.5105626, 0.45511556, 0.14653951, 0.46754283],
     ),
     (
         SamplerName::Sobol,

@@ -31,6 +31,8 @@
 
 mod pairs;
 
+use std::sync::atomic::AtomicBool;
+
 use serde::Serialize;
 
 use crate::PointSet;
@@ -123,6 +125,18 @@ fn columns(points: &PointSet) -> Vec<Vec<f64>> {
 /// The discrepancy of the `n` points in `cols`, normalised as if there were
 /// `count` points (`count = n` except for [`l2_discrepancy_iterative`]).
 fn evaluate(method: L2Method, cols: &[Vec<f64>], n: usize, count: usize) -> f64 {
+    let never = AtomicBool::new(false);
+    evaluate_cancellable(method, cols, n, count, &never).unwrap_or(f64::NAN)
+}
+
+/// [`evaluate`], or `None` once `cancel` is set.
+fn evaluate_cancellable(
+    method: L2Method,
+    cols: &[Vec<f64>],
+    n: usize,
+    count: usize,
+    cancel: &AtomicBool,
+) -> Option<f64> {
     let d = cols.len();
     let nf = count as f64;
     let single = pairs::compensated_sum((0..n).map(|i| {
@@ -130,8 +144,8 @@ fn evaluate(method: L2Method, cols: &[Vec<f64>], n: usize, count: usize) -> f64 
             .map(|c| single_factor(method, c[i]))
             .product::<f64>()
     }));
-    let pairs = pairs::pair_sum(method, cols, n) / (nf * nf);
-    match method {
+    let pairs = pairs::pair_sum(method, cols, n, cancel)? / (nf * nf);
+    Some(match method {
         L2Method::L2Star => {
             let sq = ratio_power(1, 3, d) - 2.0 * ratio_power(1, 2, d) / nf * single + pairs;
             // Rounding can leave a tiny negative square for near-perfect sets.
@@ -140,7 +154,7 @@ fn evaluate(method: L2Method, cols: &[Vec<f64>], n: usize, count: usize) -> f64 
         L2Method::Centered => ratio_power(13, 12, d) - 2.0 / nf * single + pairs,
         L2Method::WrapAround => -ratio_power(4, 3, d) + pairs,
         L2Method::Mixture => ratio_power(19, 12, d) - 2.0 / nf * single + pairs,
-    }
+    })
 }
 
 /// One L2-type discrepancy, in SciPy's convention (see [`L2Method::is_squared`]).
@@ -152,6 +166,32 @@ pub fn l2_discrepancy(points: &PointSet, method: L2Method) -> f64 {
 /// `iterative=True`: the start of `update_discrepancy`, which adds it).
 pub fn l2_discrepancy_iterative(points: &PointSet, method: L2Method) -> f64 {
     evaluate(method, &columns(points), points.len(), points.len() + 1)
+}
+
+/// [`l2_discrepancy`] (or, with `iterative`, [`l2_discrepancy_iterative`])
+/// that another thread can stop: `None` if `cancel` was set before it
+/// finished. The O(n² d) pair sum checks the flag between chunks of 32 rows.
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use lowdisc_metrics::{L2Method, PointSet, l2_discrepancy, l2_discrepancy_cancellable};
+///
+/// let points = PointSet::from_slice(2, &[0.25, 0.75, 0.75, 0.25]).unwrap();
+/// let go = AtomicBool::new(false);
+/// let value = l2_discrepancy_cancellable(&points, L2Method::Centered, false, &go);
+/// assert_eq!(value, Some(l2_discrepancy(&points, L2Method::Centered)));
+/// let stop = AtomicBool::new(true);
+/// assert_eq!(l2_discrepancy_cancellable(&points, L2Method::Centered, false, &stop), None);
+/// ```
+pub fn l2_discrepancy_cancellable(
+    points: &PointSet,
+    method: L2Method,
+    iterative: bool,
+    cancel: &AtomicBool,
+) -> Option<f64> {
+    let n = points.len();
+    let count = if iterative { n + 1 } else { n };
+    evaluate_cancellable(method, &columns(points), n, count, cancel)
 }
 
 /// All four L2-type discrepancies (the columns are extracted once).

@@ -30,7 +30,8 @@ pub use distance::{
 };
 pub use error::{MetricsError, Result};
 pub use l2::{
-    L2Discrepancies, L2Method, l2_discrepancies, l2_discrepancy, l2_discrepancy_iterative,
+    L2Discrepancies, L2Method, l2_discrepancies, l2_discrepancy, l2_discrepancy_cancellable,
+    l2_discrepancy_iterative,
 };
 pub use points::PointSet;
 pub use spectrum::{RadialSpectrum, radial_power_spectrum};

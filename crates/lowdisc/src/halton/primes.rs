@@ -1,45 +1,51 @@
 //! The prime bases of the Halton sequence, computed at compile time.
 //!
-//! [`PRIMES`] holds the first [`NUM_DIMENSIONS`] primes (2, 3, 5, ..., 8161),
-//! produced by a `const fn` trial-division sieve, so no table is committed.
-//! Dimension `d` of the Halton sequence uses base `PRIMES[d]`.
+//! [`PRIMES`] holds every prime below `2^16` (2, 3, 5, ..., 65521: the first
+//! [`NUM_DIMENSIONS`] = 6,542 primes), produced by a `const fn` sieve of
+//! Eratosthenes, so no table is committed. Dimension `d` of the Halton
+//! sequence uses base `PRIMES[d]`; every base fits the `u16` entries of the
+//! digit-permutation tables.
 //!
 //! For each base the module also fixes the number of digits the randomized
 //! sequences scramble, [`scrambled_digits`]: the smallest `K` with
 //! `b^K >= 2^64`, so the digits left out weigh less than `b^-K <= 2^-64`.
 
-/// The number of Halton dimensions (one per prime base).
-pub const NUM_DIMENSIONS: u32 = 1024;
+/// The number of Halton dimensions (one per prime base below `2^16`).
+pub const NUM_DIMENSIONS: u32 = 6542;
+
+/// Bases are below this bound.
+const BASE_LIMIT: usize = 1 << 16;
 
 /// The first [`NUM_DIMENSIONS`] primes, in increasing order.
-pub const PRIMES: [u32; NUM_DIMENSIONS as usize] = first_primes();
+pub static PRIMES: [u32; NUM_DIMENSIONS as usize] = first_primes();
 
-/// Finds the first `NUM_DIMENSIONS` primes by trial division by the primes
-/// already found (only those up to the square root of the candidate).
+/// The primes below [`BASE_LIMIT`], by a sieve of Eratosthenes (crossing out
+/// the multiples of each prime from its square on).
 const fn first_primes() -> [u32; NUM_DIMENSIONS as usize] {
-    let mut primes = [0u32; NUM_DIMENSIONS as usize];
-    let mut count = 0usize;
-    let mut candidate = 2u32;
-    while count < primes.len() {
-        let mut is_prime = true;
-        let mut i = 0usize;
-        while i < count {
-            let p = primes[i];
-            if p * p > candidate {
-                break;
+    let mut composite = [false; BASE_LIMIT];
+    let mut p = 2usize;
+    while p * p < BASE_LIMIT {
+        if !composite[p] {
+            let mut m = p * p;
+            while m < BASE_LIMIT {
+                composite[m] = true;
+                m += p;
             }
-            if candidate % p == 0 {
-                is_prime = false;
-                break;
-            }
-            i += 1;
         }
-        if is_prime {
-            primes[count] = candidate;
+        p += 1;
+    }
+    let mut primes = [0u32; NUM_DIMENSIONS as usize];
+    let (mut count, mut candidate) = (0usize, 2usize);
+    while candidate < BASE_LIMIT {
+        if !composite[candidate] {
+            // Indexing past the end (a wrong NUM_DIMENSIONS) fails the build.
+            primes[count] = candidate as u32;
             count += 1;
         }
         candidate += 1;
     }
+    // Too few primes for NUM_DIMENSIONS also fails the build.
+    assert!(count == NUM_DIMENSIONS as usize);
     primes
 }
 
@@ -78,9 +84,11 @@ mod tests {
             .take(NUM_DIMENSIONS as usize)
             .collect();
         assert_eq!(&PRIMES[..], &brute[..]);
-        // Well-known values: the 1000th prime is 7919, the 1024th 8161.
+        // Well-known values: the 1000th prime is 7919, the 1024th 8161, the
+        // largest below 2^16 65521.
         assert_eq!(PRIMES[999], 7919);
         assert_eq!(PRIMES[1023], 8161);
+        assert_eq!(PRIMES[NUM_DIMENSIONS as usize - 1], 65521);
         assert_eq!(prime(0), Some(2));
         assert_eq!(prime(NUM_DIMENSIONS), None);
     }

@@ -2,12 +2,13 @@
 //!
 //! Dimension `d` (base `b`, `K = scrambled_digits(b)` positions) owns `K`
 //! uniformly random permutations of `0..b`, stored position-major in one
-//! `u16` slice of `K * b` entries (`b <= 8161` fits `u16`), with the values
+//! `u16` slice of `K * b` entries (every base is below `2^16`), with the values
 //! of their scrambled zero tails (`K + 1` words). They are drawn by
 //! Fisher-Yates shuffles from one PCG32 stream seeded by `hash(seed, d)`, so
 //! each dimension's tables can be built alone, in any order.
 //!
-//! All tables for all 1,024 dimensions would take about 45 MB, so they are
+//! All tables would take about 45 MB for the first 1,024 dimensions and
+//! gigabytes for all 6,542, so they are
 //! built lazily: with the `std` feature each dimension's slot is a
 //! `OnceLock` filled on first use and shared (`Arc`) between clones of the
 //! sequence; without `std` the tables of a dimension are rebuilt for every

@@ -30,8 +30,8 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
     (
         SamplerName::HaltonOwen,
         [
-            0x2c8072b7, 0xa6b858d1, 0xa341dbab, 0x8de4b4c2, 0x31b9a890, 0xe5e27464, 0x53bd1d16,
-            0xc7848659, 0x046ba26a, 0xefd51b7a, 0x872d797c, 0x589a0ae1,
+            0x2c8072b7, 0xa6b858d1, 0xde1c40e9, 0x8de4b4c2, 0x31b9a890, 0xa2fdc22f, 0x53bd1d16,
+            0xc7848659, 0x88f1bc3f, 0xefd51b7a, 0x872d797c, 0x2c52a843,
         ],
     ),
     // scipy.stats.qmc.Sobol(3, scramble=False): [0,0,0], [.5,.5,.5], [.75,.25,.25], [.25,.75,.75].

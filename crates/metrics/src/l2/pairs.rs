@@ -14,7 +14,9 @@
 //! `0, n−1, 1, n−2, …` so that consecutive rows pair a long and a short one, and cut
 //! into chunks of [`ROWS_PER_CHUNK`]: every chunk costs about the same. Chunks run in
 //! parallel (rayon), each summed in a fixed order, and the chunk sums are added in
-//! chunk order, so the value does not depend on the number of threads.
+//! chunk order, so the value does not depend on the number of threads. A chunk
+//! that starts after the caller's cancel flag was set is skipped, so a
+//! cancelled sum stops within one chunk per thread (and its value is discarded).
 //!
 //! Instruction set: each chunk is run through `pulp::Arch::dispatch`, which detects
 //! x86-64-v3 (AVX2, FMA, …) at run time and runs a second build of the inlined kernel
@@ -23,6 +25,8 @@
 //! WD and MD (one rounding fewer), so those two can differ in their last bits between
 //! processors with and without FMA; on one machine the value never depends on the
 //! number of threads.
+
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
@@ -228,13 +232,16 @@ impl Prepared {
     }
 
     /// `Σ_{i,j}` of the kernel's products (diagonal plus twice the upper triangle).
-    fn pair_sum<K: Kernel + Sync>(&self) -> f64 {
+    fn pair_sum<K: Kernel + Sync>(&self, cancel: &AtomicBool) -> Option<f64> {
         let chunks = self.n.div_ceil(ROWS_PER_CHUNK);
         let arch = pulp::Arch::new();
         let fused = has_fma(arch);
         let sums: Vec<f64> = (0..chunks)
             .into_par_iter()
             .map(|chunk| {
+                if cancel.load(Ordering::Relaxed) {
+                    return 0.0;
+                }
                 let points = self;
                 let kernel = std::marker::PhantomData::<K>;
                 if fused {
@@ -252,9 +259,12 @@ impl Prepared {
                 }
             })
             .collect();
+        if cancel.load(Ordering::Relaxed) {
+            return None;
+        }
         let off_diagonal = compensated_sum(sums);
         let diagonal = compensated_sum((0..self.n).map(|i| self.diagonal::<K>(i)));
-        diagonal + 2.0 * off_diagonal
+        Some(diagonal + 2.0 * off_diagonal)
     }
 }
 
@@ -292,18 +302,23 @@ impl<K: Kernel, const FUSED: bool> pulp::WithSimd for Chunk<'_, K, FUSED> {
 }
 
 /// `Σ_{i,j} Π_k K(x_ik, x_jk)` for `method`, over the first `n` entries of each column
-/// in `cols` (one column per coordinate).
-pub(super) fn pair_sum(method: L2Method, cols: &[Vec<f64>], n: usize) -> f64 {
+/// in `cols` (one column per coordinate); `None` if `cancel` was set meanwhile.
+pub(super) fn pair_sum(
+    method: L2Method,
+    cols: &[Vec<f64>],
+    n: usize,
+    cancel: &AtomicBool,
+) -> Option<f64> {
     let p = Prepared::new(method, cols, n);
     let d = cols.len();
     match method {
-        L2Method::L2Star => p.pair_sum::<Star>(),
-        L2Method::Centered => p.pair_sum::<Centered>(),
-        L2Method::WrapAround => p.pair_sum::<WrapAround>(),
+        L2Method::L2Star => p.pair_sum::<Star>(cancel),
+        L2Method::Centered => p.pair_sum::<Centered>(cancel),
+        L2Method::WrapAround => p.pair_sum::<WrapAround>(cancel),
         L2Method::Mixture if d <= MAX_DOUBLED_DIMS => {
-            p.pair_sum::<MixtureDoubled>() * 0.5f64.powi(d as i32)
+            Some(p.pair_sum::<MixtureDoubled>(cancel)? * 0.5f64.powi(d as i32))
         }
-        L2Method::Mixture => p.pair_sum::<Mixture>(),
+        L2Method::Mixture => p.pair_sum::<Mixture>(cancel),
     }
 }
 

@@ -64,41 +64,64 @@ pub fn slice<'a, T: Element>(array: &'a PyReadonlyArray2<'_, T>) -> PyResult<&'a
         .map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// The `(n, d)` array of a point request, allocated by numpy (whose
-/// allocator asks the kernel for huge pages for large arrays, which makes the
-/// first write to each page much cheaper) and filled in place with the GIL
-/// released.
-pub fn filled_2d<'py>(
-    py: Python<'py>,
-    spec: &PointSpec,
-    n: usize,
-    d: usize,
-) -> PyResult<Bound<'py, PyAny>> {
-    fn fill<'py, T: Element + Send>(
-        py: Python<'py>,
-        spec: &PointSpec,
-        shape: [usize; 2],
-    ) -> PyResult<Bound<'py, PyAny>>
+/// Fills `out`, a writeable, C-contiguous 2-D numpy array of float64,
+/// float32 or uint32, with the points of the request `spec(n, d, dtype)`
+/// built from its shape and type, with the GIL released. The caller
+/// allocates the array (numpy asks the kernel for huge pages for large
+/// arrays, which makes the first write to each page much cheaper).
+pub fn fill_2d(
+    py: Python<'_>,
+    out: &Bound<'_, PyAny>,
+    spec: impl Fn(u64, u32, Dtype) -> PointSpec,
+) -> PyResult<()> {
+    fn fill<T: Element + Send>(
+        py: Python<'_>,
+        array: &Bound<'_, PyArray2<T>>,
+        spec: impl Fn(u64, u32, Dtype) -> PointSpec,
+        dtype: Dtype,
+    ) -> PyResult<()>
     where
         for<'a> &'a mut [T]: Into<Output<'a>>,
     {
-        // Refuse a bad request before numpy allocates anything for it.
-        points::check_request(spec).map_err(engine_error)?;
-        let array = PyArray2::<T>::zeros(py, shape, false);
-        {
-            let mut view = array.readwrite();
-            let values = view
-                .as_slice_mut()
-                .map_err(|e| PyValueError::new_err(e.to_string()))?;
-            py.detach(|| points::generate_into(spec, values.into()))
-                .map_err(engine_error)?;
+        let shape = array.shape();
+        let d = u32::try_from(shape[1])
+            .map_err(|_| PyValueError::new_err(format!("d = {} is too large", shape[1])))?;
+        let spec = spec(shape[0] as u64, d, dtype);
+        points::check_request(&spec).map_err(engine_error)?;
+        if !array.is_c_contiguous() {
+            return Err(PyValueError::new_err("out must be C-contiguous"));
         }
-        Ok(array.into_any())
+        let mut view = array
+            .try_readwrite()
+            .map_err(|e| PyValueError::new_err(format!("out must be writeable: {e}")))?;
+        let values = view
+            .as_slice_mut()
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        py.detach(|| points::generate_into(&spec, values.into()))
+            .map_err(engine_error)
     }
-    let shape = [n, d];
-    match spec.dtype {
-        Dtype::F64 => fill::<f64>(py, spec, shape),
-        Dtype::F32 => fill::<f32>(py, spec, shape),
-        Dtype::U32 => fill::<u32>(py, spec, shape),
+    let array = out
+        .cast::<PyUntypedArray>()
+        .map_err(|_| PyTypeError::new_err("out must be a numpy array"))?;
+    if array.ndim() != 2 {
+        return Err(PyValueError::new_err(format!(
+            "out must be a 2-D array, got {} dimensions",
+            array.ndim()
+        )));
+    }
+    if let Ok(a) = out.cast::<PyArray2<f64>>() {
+        fill(py, a, spec, Dtype::F64)
+    } else if let Ok(a) = out.cast::<PyArray2<f32>>() {
+        fill(py, a, spec, Dtype::F32)
+    } else if let Ok(a) = out.cast::<PyArray2<u32>>() {
+        fill(py, a, spec, Dtype::U32)
+    } else {
+        let got = array
+            .dtype()
+            .str()
+            .map_or_else(|_| "?".into(), |s| s.to_string());
+        Err(PyTypeError::new_err(format!(
+            "out must have dtype float64, float32 or uint32, got {got}"
+        )))
     }
 }

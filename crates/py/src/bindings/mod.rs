@@ -15,7 +15,6 @@ use numpy::{
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use crate::engine::Dtype;
 use crate::engine::pixel::{self, PixelSpec};
 use crate::engine::points::{self as sequences, PointSpec, Sequence};
 use arrays::engine_error;
@@ -31,21 +30,21 @@ fn sequence(name: &str) -> PyResult<Sequence> {
     }
 }
 
-/// `n` points of `d` dimensions of a sequence, as an `(n, d)` array.
+/// Fills `out`, a writeable C-contiguous `(n, d)` array of float64, float32
+/// or uint32, with points `start .. start + n` of a sequence (the caller
+/// allocates, so running out of memory is numpy's `MemoryError`).
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
-fn points<'py>(
-    py: Python<'py>,
+fn points_into(
+    py: Python<'_>,
+    out: &Bound<'_, PyAny>,
     sequence_name: &str,
-    n: u64,
-    d: u32,
     start: u64,
     order: &str,
     scramble: &str,
     seed: u64,
     bits: u32,
-    dtype: &str,
-) -> PyResult<Bound<'py, PyAny>> {
+) -> PyResult<()> {
     let natural_order = match order {
         "gray" => false,
         "natural" => true,
@@ -55,8 +54,9 @@ fn points<'py>(
             )));
         }
     };
-    let spec = PointSpec {
-        sequence: sequence(sequence_name)?,
+    let sequence = sequence(sequence_name)?;
+    arrays::fill_2d(py, out, |n, d, dtype| PointSpec {
+        sequence,
         n,
         d,
         start,
@@ -64,9 +64,8 @@ fn points<'py>(
         scramble: scramble.to_owned(),
         seed,
         bits,
-        dtype: Dtype::from_name(dtype).map_err(engine_error)?,
-    };
-    arrays::filled_2d(py, &spec, n as usize, d as usize)
+        dtype,
+    })
 }
 
 /// The renderer's samples for `pixels` (an `(p, 2)` uint32 array of x, y), as
@@ -126,7 +125,7 @@ fn sampler_names() -> Vec<&'static str> {
 fn _lowdisc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SOBOL_DIMENSIONS", sequences::SOBOL_DIMENSIONS)?;
     m.add("HALTON_DIMENSIONS", sequences::HALTON_DIMENSIONS)?;
-    m.add_function(wrap_pyfunction!(points, m)?)?;
+    m.add_function(wrap_pyfunction!(points_into, m)?)?;
     m.add_function(wrap_pyfunction!(pixel_samples, m)?)?;
     m.add_function(wrap_pyfunction!(sobol_matrices, m)?)?;
     m.add_function(wrap_pyfunction!(sampler_names, m)?)?;

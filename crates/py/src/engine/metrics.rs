@@ -10,6 +10,8 @@ use lowdisc_metrics::{
     BoundsOptions, DistanceMetric, ExactOptions, L2Method, PointSet, estimated_work,
 };
 
+use std::sync::atomic::AtomicBool;
+
 use super::{EngineError, Result};
 
 /// The points as a validated set (`coords` point-major, `d` per point).
@@ -19,8 +21,15 @@ fn point_set(coords: &[f64], d: usize) -> Result<PointSet> {
 
 /// The L2-type discrepancy `method` (SciPy's name: `CD`, `WD`, `MD`,
 /// `L2-star`) in SciPy's convention: CD, WD and MD squared, L2-star rooted.
-/// `iterative` normalises as if one more point were to be added.
-pub fn discrepancy(coords: &[f64], d: usize, method: &str, iterative: bool) -> Result<f64> {
+/// `iterative` normalises as if one more point were to be added. Setting
+/// `cancel` from another thread stops the sum (the error says so).
+pub fn discrepancy(
+    coords: &[f64],
+    d: usize,
+    method: &str,
+    iterative: bool,
+    cancel: &AtomicBool,
+) -> Result<f64> {
     let method = L2Method::ALL
         .into_iter()
         .find(|m| m.scipy_name() == method)
@@ -31,11 +40,15 @@ pub fn discrepancy(coords: &[f64], d: usize, method: &str, iterative: bool) -> R
             ))
         })?;
     let points = point_set(coords, d)?;
-    Ok(if iterative {
-        lowdisc_metrics::l2_discrepancy_iterative(&points, method)
-    } else {
-        lowdisc_metrics::l2_discrepancy(&points, method)
-    })
+    lowdisc_metrics::l2_discrepancy_cancellable(&points, method, iterative, cancel)
+        .ok_or_else(|| EngineError::value("the discrepancy was cancelled"))
+}
+
+/// The pairs times dimensions the L2 discrepancies of `n` points in `d`
+/// dimensions visit, `n (n + 1) / 2 * d`: their work.
+pub fn discrepancy_work(n: usize, d: usize) -> f64 {
+    let n = n as f64;
+    n * (n + 1.0) / 2.0 * d as f64
 }
 
 /// The estimated elementary operations of the exact star discrepancy.
@@ -168,8 +181,9 @@ mod tests {
     fn iterative_normalises_by_one_more_point() {
         // WD of n points: -(4/3)^d + S/n^2, so S is recovered from either.
         let x = grid();
-        let plain = discrepancy(&x, 2, "WD", false).unwrap();
-        let iter = discrepancy(&x, 2, "WD", true).unwrap();
+        let go = AtomicBool::new(false);
+        let plain = discrepancy(&x, 2, "WD", false, &go).unwrap();
+        let iter = discrepancy(&x, 2, "WD", true, &go).unwrap();
         let c = (4.0f64 / 3.0).powi(2);
         let s = (plain + c) * 256.0;
         assert!((iter - (s / 289.0 - c)).abs() < 1e-12, "{plain} {iter}");
@@ -187,8 +201,11 @@ mod tests {
     #[test]
     fn bad_input_is_refused_with_the_reason() {
         let err = |r: Result<f64>| r.unwrap_err().to_string();
-        assert!(err(discrepancy(&[0.5, f64::NAN], 2, "CD", false)).contains("not finite"));
-        assert!(err(discrepancy(&[0.5], 1, "XD", false)).contains("is not a valid method"));
+        let go = AtomicBool::new(false);
+        assert!(err(discrepancy(&[0.5, f64::NAN], 2, "CD", false, &go)).contains("not finite"));
+        assert!(err(discrepancy(&[0.5], 1, "XD", false, &go)).contains("is not a valid method"));
+        let stop = AtomicBool::new(true);
+        assert!(err(discrepancy(&grid(), 2, "CD", false, &stop)).contains("cancelled"));
         assert!(err(min_distance(&grid(), 2, "cosine")).contains("'euclidean' or 'toroidal'"));
         assert!(err(star_discrepancy(&grid(), 2, 1.0)).contains("star_bounds"));
     }

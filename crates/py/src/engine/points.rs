@@ -1,5 +1,6 @@
 //! Sequences as arrays: Sobol (Joe-Kuo, Gray-code or natural order, any of
-//! lowdisc's randomizations), Halton (unscrambled, digit-permuted, Owen),
+//! lowdisc's randomizations), Halton (unscrambled, digit-permuted, Owen,
+//! nested affine),
 //! independent (PCG32) and stratified (jittered) points.
 //!
 //! Point `k` of a request is sequence point `start + k`, so a request can
@@ -7,7 +8,6 @@
 //! points computed in parallel; every value depends only on its index and
 //! dimension, so results do not depend on the thread count.
 
-use lowdisc::catalog::MAX_POINT_WORDS;
 use lowdisc::halton::{self, Halton, HaltonRandomize};
 use lowdisc::independent::Independent;
 use lowdisc::sobol;
@@ -20,10 +20,11 @@ use super::{CHUNK_VALUES, Dtype, EngineError, Result, Values};
 /// Which sequence a request asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Sequence {
-    /// Sobol; scrambles `none`, `xor`, `owen` ([`lowdisc::scramble::OwenTreeKey`]),
-    /// `fast-owen`, `owen-per-digit` (the catalog's `sobol-owen` values).
+    /// Sobol; scrambles `none`, `xor`, `owen` (the catalog's `sobol-owen`
+    /// values), `owen-tree` ([`lowdisc::scramble::OwenTreeKey`]: the same
+    /// law, other values), `fast-owen`, `lms`.
     Sobol,
-    /// Halton; scrambles `none`, `permute`, `owen`.
+    /// Halton; scrambles `none`, `permute`, `owen`, `nested-affine`.
     Halton,
     /// Independent uniform numbers: dimension `j` of point `k` is draw `k` of
     /// PCG32 stream `j`.
@@ -59,6 +60,11 @@ pub struct PointSpec {
 pub const SOBOL_DIMENSIONS: u32 = sobol::NUM_DIMENSIONS as u32;
 /// The Halton dimensions available.
 pub const HALTON_DIMENSIONS: u32 = halton::NUM_DIMENSIONS;
+
+/// The most values one request writes: what a byte-addressed array of
+/// 8-byte values can hold (`isize::MAX / 8`). Memory runs out well before
+/// this; the caller allocates the output, so that is its error to report.
+pub const MAX_VALUES: u64 = (isize::MAX as u64) / 8;
 
 /// The points of `spec`, point-major (`n * d` values).
 pub fn generate(spec: &PointSpec) -> Result<Values> {
@@ -201,10 +207,10 @@ pub fn check_request(spec: &PointSpec) -> Result<usize> {
             spec.d
         )));
     }
-    if spec.n.saturating_mul(u64::from(spec.d)) > MAX_POINT_WORDS {
+    let values = spec.n.saturating_mul(u64::from(spec.d));
+    if values > MAX_VALUES {
         return Err(EngineError::value(format!(
-            "n * d = {} * {} exceeds {MAX_POINT_WORDS} values (1 GiB); generate in batches \
-             with start=",
+            "n * d = {} * {} is more than an array can hold here (at most {MAX_VALUES} values)",
             spec.n, spec.d
         )));
     }
@@ -244,7 +250,7 @@ pub fn check_request(spec: &PointSpec) -> Result<usize> {
 fn halton_kind(spec: &PointSpec) -> Result<HaltonRandomize> {
     HaltonRandomize::from_name(&spec.scramble).ok_or_else(|| {
         EngineError::value(format!(
-            "Halton scramble must be 'none', 'permute' or 'owen', got {:?}",
+            "Halton scramble must be 'none', 'permute', 'owen' or 'nested-affine', got {:?}",
             spec.scramble
         ))
     })

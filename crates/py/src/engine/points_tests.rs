@@ -37,7 +37,8 @@ fn sobol_equals_the_catalog_in_both_orders_and_every_scramble() {
     for (scramble, name) in [
         ("none", "sobol"),
         ("xor", "sobol-xor"),
-        ("owen-per-digit", "sobol-owen"),
+        ("owen", "sobol-owen"),
+        ("lms", "sobol-lms"),
         ("fast-owen", "sobol-fast-owen"),
     ] {
         let mut s = spec(Sequence::Sobol, scramble, 300, 7);
@@ -111,12 +112,16 @@ fn bad_requests_are_refused_with_the_reason() {
     s.start = u32::MAX as u64;
     assert!(err(&s).contains("2^32 points"));
     s.start = 0;
-    s.scramble = "lms".into();
+    s.scramble = "owen-per-digit".into();
     assert!(err(&s).contains("'fast-owen'"));
-    let h = spec(Sequence::Halton, "none", 4, 1025);
-    assert!(err(&h).contains("1024 dimensions"));
-    let big = spec(Sequence::Independent, "none", 1 << 28, 2);
-    assert!(err(&big).contains("generate in batches"));
+    let h = spec(Sequence::Halton, "none", 4, 6543);
+    assert!(err(&h).contains("6542 dimensions"));
+    let big = spec(Sequence::Independent, "none", 1 << 62, 2);
+    assert!(
+        err(&big).contains("more than an array can hold"),
+        "{}",
+        err(&big)
+    );
     let mut strat = spec(Sequence::Stratified, "none", 4, 2);
     strat.start = 1;
     assert!(err(&strat).contains("start must be 0"));
@@ -147,7 +152,7 @@ fn results_do_not_depend_on_the_thread_count() {
             .build()
             .unwrap();
         pool.install(|| {
-            let s = spec(Sequence::Sobol, "owen", 20_000, 8);
+            let s = spec(Sequence::Sobol, "owen-tree", 20_000, 8);
             let p = super::super::pixel::PixelSpec {
                 sampler: "zsobol".into(),
                 spp: 4,

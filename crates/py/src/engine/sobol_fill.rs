@@ -12,7 +12,7 @@
 //! on its index and dimension: chunks can run on any thread in any order
 //! and give the same bits.
 
-use lowdisc::scramble::{OwenTreePoints, PreparedKey, RandomizeStrategy, dimension_seed};
+use lowdisc::scramble::{LmsKey, OwenTreePoints, PreparedKey, RandomizeStrategy, dimension_seed};
 use lowdisc::sobol::{self, gray_code};
 use rayon::prelude::*;
 
@@ -28,16 +28,20 @@ pub enum Scrambler {
     /// A catalog strategy that needs only each dimension's seed (`xor`,
     /// `fast-owen`): `strategy.apply_dimension_seed(word, seeds[j])`.
     Seeded(RandomizeStrategy, Vec<u32>),
-    /// The catalog's per-digit exact Owen scramble (`owen-per-digit`: the
-    /// renderer's `sobol-owen` values), prepared per dimension.
+    /// The catalog's exact Owen scramble with one hash per digit (`owen`:
+    /// the renderer's `sobol-owen` values), prepared per dimension.
     PerDigit(Vec<PreparedKey>),
     /// Owen scrambling at a few hashes per value
-    /// ([`lowdisc::scramble::OwenTreeKey`], `owen`), whole points at once.
+    /// ([`lowdisc::scramble::OwenTreeKey`], `owen-tree`): the same law as
+    /// `owen`, other values; whole points at once.
     Tree(OwenTreePoints),
+    /// Matoušek's linear matrix scramble plus digital shift (`lms`, the
+    /// catalog's [`RandomizeStrategy::Lms`] values), one key per dimension.
+    Lms(Vec<LmsKey>),
 }
 
 /// The names [`Scrambler::new`] accepts.
-pub const SCRAMBLES: [&str; 5] = ["none", "xor", "owen", "fast-owen", "owen-per-digit"];
+pub const SCRAMBLES: [&str; 6] = ["none", "xor", "owen", "owen-tree", "fast-owen", "lms"];
 
 impl Scrambler {
     /// Whether `name` is one of [`SCRAMBLES`].
@@ -46,7 +50,7 @@ impl Scrambler {
             return Ok(());
         }
         Err(EngineError::value(format!(
-            "Sobol scramble must be 'none', 'xor', 'owen', 'fast-owen' or 'owen-per-digit', \
+            "Sobol scramble must be 'none', 'xor', 'owen', 'owen-tree', 'fast-owen' or 'lms', \
              got {name:?}"
         )))
     }
@@ -58,16 +62,21 @@ impl Scrambler {
         Ok(match name {
             "xor" => Scrambler::Seeded(RandomizeStrategy::Xor, seeds()),
             "fast-owen" => Scrambler::Seeded(RandomizeStrategy::FastOwen, seeds()),
-            "owen-per-digit" => Scrambler::PerDigit(
+            "lms" => Scrambler::Lms(
+                (0..d)
+                    .map(|j| LmsKey::new(dimension_seed(seed, j)))
+                    .collect(),
+            ),
+            "owen" => Scrambler::PerDigit(
                 (0..d)
                     .filter_map(|j| RandomizeStrategy::Owen.prepare(dimension_seed(seed, j)))
                     .collect(),
             ),
-            "owen" if OwenTreePoints::vector_kernel_available() => {
+            "owen-tree" if OwenTreePoints::vector_kernel_available() => {
                 Scrambler::Tree(OwenTreePoints::new(seed, d))
             }
             // The portable keys' tables (8 KiB each), built on all cores.
-            "owen" => Scrambler::Tree(OwenTreePoints::from_keys(
+            "owen-tree" => Scrambler::Tree(OwenTreePoints::from_keys(
                 (0..d)
                     .into_par_iter()
                     .map(|j| OwenTreePoints::portable_key(seed, j, d))
@@ -91,6 +100,9 @@ impl Scrambler {
                 .zip(seeds)
                 .for_each(|((o, &w), &s)| *o = convert(r.apply_dimension_seed(w, s) & mask)),
             Scrambler::PerDigit(keys) => pairs
+                .zip(keys)
+                .for_each(|((o, &w), k)| *o = convert(k.scramble(w) & mask)),
+            Scrambler::Lms(keys) => pairs
                 .zip(keys)
                 .for_each(|((o, &w), k)| *o = convert(k.scramble(w) & mask)),
             Scrambler::Tree(keys) => {
@@ -246,7 +258,7 @@ mod tests {
     #[test]
     fn the_tree_scramble_is_the_key_of_each_dimension() {
         let (n, d) = (5000, 70);
-        let got = words("owen", n, d, 100, true);
+        let got = words("owen-tree", n, d, 100, true);
         let keys: Vec<_> = (0..d as u32).map(|j| OwenTreeKey::new(3, j)).collect();
         for (k, point) in (100..).zip(got.chunks_exact(d)) {
             for ((j, &w), key) in (0..).zip(point).zip(&keys) {
@@ -273,7 +285,7 @@ mod tests {
             fill(
                 &mut out,
                 range,
-                &Scrambler::new("owen", 3, d as u32).unwrap(),
+                &Scrambler::new("owen-tree", 3, d as u32).unwrap(),
                 |w| w,
             );
             for (i, (&got, &w)) in out.iter().zip(&plain).enumerate() {
@@ -284,7 +296,10 @@ mod tests {
 
     #[test]
     fn unknown_scrambles_are_refused_with_the_choices() {
-        let err = Scrambler::new("lms", 0, 2).err().unwrap().to_string();
-        assert!(err.contains("'owen-per-digit', got \"lms\""), "{err}");
+        let err = Scrambler::new("owen-per-digit", 0, 2)
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(err.contains("'lms', got \"owen-per-digit\""), "{err}");
     }
 }

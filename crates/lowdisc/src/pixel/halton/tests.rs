@@ -18,7 +18,7 @@ fn pixel_of(index: u64, exponents: [u32; 2]) -> [u64; 2] {
     [mirrored(2, exponents[0]), mirrored(3, exponents[1])]
 }
 
-const ALL: [HaltonRandomize; 3] = HaltonRandomize::ALL;
+const ALL: [HaltonRandomize; 4] = HaltonRandomize::ALL;
 
 #[test]
 fn inverses_and_crt() {
@@ -226,8 +226,12 @@ fn pinned_values() {
 /// Row 0 (unscrambled) checked independently: pixel (1, 2), sample 3 of a
 /// 6x4 image is global index 276; offsets are the radical inverses of
 /// 276 >> 3 = 34 (base 2) and 276 / 9 = 30 (base 3), then 276 in bases 5, 7, 11.
-const PINNED: [[u32; 5]; 3] = [
+/// Rows follow `HaltonRandomize::ALL`: none, permute, Owen, nested affine
+/// (the values Owen had when it meant the affine maps; bases 2 and 3, the
+/// pixel offsets, agree between the two).
+const PINNED: [[u32; 5]; 4] = [
     [1049100288, 1039980264, 1045972176, 1057380369, 1039141176],
     [1056987166, 1031301616, 1056600066, 1056533762, 1057980611],
+    [1042646444, 1035205264, 1042815816, 1057768331, 1024022384],
     [1042646444, 1035205264, 1060301871, 1063539154, 1062121781],
 ];
