@@ -10,11 +10,12 @@
 //! | star discrepancy, bounds | [`star_bounds`] | `lower ≤ D* ≤ upper` | random boxes (paper) and threshold accepting; grid bracketing | `K N d`; `R I N d`; `N d + (k+1)^d d` |
 //! | L2-star, CD, WD, MD | [`l2_discrepancy`], [`l2_discrepancies`] | SciPy's formulas and conventions (L2-star as root, others squared) | symmetric pair sum, vectorised, parallel | `N² d / 2` |
 //! | minimum / mean NN distance | [`distance_stats`], [`min_distance`] | Euclidean or toroidal | uniform grid, ring search | about `N·3^d` |
+//! | error-image structure | [`nyquist_power_ratio`] | mean periodogram power near the Nyquist corner over the mean power (white noise ≈ 1, checkerboard ≫ 1) | DFT at the corner bins only, separable | `(W² H + W H²) / 5` |
 //! | radial power spectrum (2-D) | [`radial_power_spectrum`] | `abs(Σ e^{−2πi k·x})²/N` averaged over rings | separable phases | `N K²` |
 //!
 //! Module [`cost`] estimates every metric's work and memory before it runs, so
 //! callers can refuse unaffordable jobs. Details, formulas and references are in each
-//! module's documentation: [`star`], [`l2`], [`distance`], [`spectrum`]. Parallel parts use rayon and sum in a fixed
+//! module's documentation: [`star`], [`l2`], [`distance`], [`spectrum`], [`structure`]. Parallel parts use rayon and sum in a fixed
 //! order, so every result is bit-identical whatever the thread count.
 
 pub mod cost;
@@ -24,6 +25,7 @@ pub mod l2;
 mod points;
 pub mod spectrum;
 pub mod star;
+pub mod structure;
 
 pub use distance::{
     DistanceMetric, DistanceStats, distance_stats, min_distance, nearest_neighbour_distances,
@@ -39,3 +41,4 @@ pub use star::{
     random_box_lower_bound, star_bounds, star_discrepancy, star_discrepancy_1d,
     star_discrepancy_with, threshold_accepting_lower_bound,
 };
+pub use structure::nyquist_power_ratio;
