@@ -21,7 +21,7 @@ use crate::parse;
 use crate::progress::Reporter;
 
 /// The path depth without a preset.
-const DEFAULT_MAX_DEPTH: u32 = 5;
+pub(crate) const DEFAULT_MAX_DEPTH: u32 = 5;
 /// Runs per sampler on the built-in scene. Measured there (8 seeds, masked
 /// MSE), the paired log-ratio to `sobol` has an sd of 0.015-0.04 for
 /// `sobol-xor`, `padded-sobol` and `independent`, so 8 runs (t = 2.36) give
