@@ -65,9 +65,10 @@ pub struct StudyArgs {
     /// Samplers (comma-separated catalog names, or `all`).
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS)]
     samplers: Vec<String>,
-    /// The sampler every ratio is relative to.
-    #[arg(long, value_name = "NAME", default_value = BASELINE)]
-    baseline: String,
+    /// The samplers the ratios are relative to (comma-separated; the first
+    /// is the main tables' baseline).
+    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = BASELINE)]
+    baseline: Vec<String>,
     /// Samples per pixel.
     #[arg(long, value_name = "N")]
     spp: Option<u32>,
@@ -179,7 +180,7 @@ impl StudyArgs {
         let config = StudyConfig {
             scenes,
             samplers: samplers(&self.samplers)?,
-            baseline: parse::sampler_name(&self.baseline).context("--baseline")?,
+            baselines: samplers(&self.baseline).context("--baseline")?,
             spp: self.spp.unwrap_or(spp),
             runs: self.runs.unwrap_or(runs),
             resolution,

@@ -9,7 +9,7 @@
 //! the experiment's masked MSE, blurred MSE and FLIP
 //! ([`crate::quality::Evaluator`]) and with the error image's structure
 //! ([`error_structure`]). Per scene, each sampler's errors are compared with
-//! the baseline's by the experiment's paired ratio
+//! each baseline's by the experiment's paired ratio
 //! ([`crate::stats::paired`]); over scenes, those ratios are pooled into a
 //! geometric mean with an interval over seeds and one over scenes
 //! ([`crate::stats::pooled`]). [`write`] turns the result into `study.md`,
@@ -73,10 +73,11 @@ pub struct StudyScene {
 pub struct StudyConfig {
     /// The scenes, in table order.
     pub scenes: Vec<StudyScene>,
-    /// The samplers, in table order (the baseline among them).
+    /// The samplers, in table order (the baselines among them).
     pub samplers: Vec<SamplerName>,
-    /// The sampler every ratio is relative to.
-    pub baseline: SamplerName,
+    /// The samplers the ratios are relative to: every sampler gets its
+    /// ratios to each; the first is the main tables' baseline.
+    pub baselines: Vec<SamplerName>,
     /// Samples per pixel of every render.
     pub spp: u32,
     /// Seeds per sampler and scene (`0..runs`).
@@ -96,18 +97,20 @@ pub struct StudyConfig {
 }
 
 impl StudyConfig {
-    /// Checks the settings: scenes and samplers present, the baseline
-    /// among the samplers, at least two runs (a paired interval needs two),
+    /// Checks the settings: scenes and samplers present, at least one
+    /// baseline and every baseline among the samplers, at least two runs (a paired interval needs two),
     /// and every experiment setting in range.
     pub fn validate(&self) -> Result<()> {
         if self.scenes.is_empty() {
             bail!("the study has no scenes");
         }
-        if !self.samplers.contains(&self.baseline) {
-            bail!(
-                "the baseline `{}` is not among --samplers",
-                self.baseline.as_str()
-            );
+        if self.baselines.is_empty() {
+            bail!("the study needs a baseline");
+        }
+        for b in &self.baselines {
+            if !self.samplers.contains(b) {
+                bail!("the baseline `{}` is not among --samplers", b.as_str());
+            }
         }
         if self.runs < 2 {
             bail!(
@@ -165,6 +168,8 @@ pub struct StudyRun {
     pub seed: u64,
     /// Render time, seconds.
     pub time_s: f64,
+    /// Linear MSE over all pixels.
+    pub mse: f64,
     /// Masked errors, blurred MSE and FLIP.
     pub quality: Quality,
     /// The error image's [`error_structure`].
@@ -311,6 +316,7 @@ fn study_scene(
             runs.push(StudyRun {
                 seed,
                 time_s,
+                mse: crate::metrics::measure(&image, &reference)?.linear.mse,
                 quality: measures.evaluator.measure(&image, &reference)?,
                 structure: error_structure(&image, &reference, measures.evaluator.mask())?,
             });
@@ -355,7 +361,7 @@ mod tests {
         StudyConfig {
             scenes,
             samplers: vec![SamplerName::Independent, SamplerName::Sobol],
-            baseline: SamplerName::Sobol,
+            baselines: vec![SamplerName::Sobol],
             spp: 2,
             runs: 2,
             resolution: [8, 8],
@@ -382,7 +388,7 @@ mod tests {
         ok.validate().unwrap();
         assert_eq!(ok.experiment(&ok.scenes[0]).max_depth, 1);
         let mut c = ok.clone();
-        c.baseline = SamplerName::ZSobol;
+        c.baselines = vec![SamplerName::Sobol, SamplerName::ZSobol];
         assert!(format!("{}", c.validate().unwrap_err()).contains("baseline"));
         let mut c = ok.clone();
         c.runs = 1;
@@ -400,14 +406,14 @@ mod tests {
         assert_eq!(r.scenes.len(), 2);
         assert!(r.scenes.iter().all(|s| s.samplers.len() == 2));
         let sobol = r.samplers.iter().find(|s| s.sampler == "sobol").unwrap();
-        let masked = sobol.metrics[0].pooled.unwrap();
+        let masked = sobol.ratios[0].metrics[0].pooled.unwrap();
         assert_eq!(masked.ratio, 1.0);
         let ind = r
             .samplers
             .iter()
             .find(|s| s.sampler == "independent")
             .unwrap();
-        assert!(ind.metrics[0].pooled.unwrap().ratio > 0.0);
+        assert!(ind.ratios[0].metrics[0].pooled.unwrap().ratio > 0.0);
         assert!(ind.structure.mean.is_finite());
     }
 }

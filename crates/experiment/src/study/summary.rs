@@ -1,22 +1,23 @@
 //! Each sampler's numbers over the study's scenes: per scene its paired
-//! ratio to the baseline in every compared metric, pooled over the scenes
+//! ratio to each baseline in every compared metric, pooled over the scenes
 //! ([`crate::stats::pooled`]), and its error structure per scene and on
 //! average.
 
 use serde::Serialize;
 
-use super::{SceneResult, StudyConfig};
-use crate::quality::Quality;
+use super::{SceneResult, StudyConfig, StudyRun};
 use crate::stats::{PairedRatio, PooledRatio, Summary, paired_ratio, pooled_ratio};
 
 /// The value of one metric of a render.
-pub type QualityOf = fn(&Quality) -> f64;
+pub type MetricOf = fn(&StudyRun) -> f64;
 
-/// The compared metrics: name and value of a render.
-pub const METRICS: [(&str, QualityOf); 3] = [
-    ("masked_mse", |q| q.masked.mse),
-    ("blurred_mse", |q| q.blurred_mse),
-    ("flip", |q| q.flip),
+/// The compared metrics: name and value of a render (the first is the
+/// tables' main metric).
+pub const METRICS: [(&str, MetricOf); 4] = [
+    ("masked_mse", |r| r.quality.masked.mse),
+    ("blurred_mse", |r| r.quality.blurred_mse),
+    ("flip", |r| r.quality.flip),
+    ("mse", |r| r.mse),
 ];
 
 /// One metric of one sampler over the scenes.
@@ -42,48 +43,45 @@ pub struct StructureSummary {
     pub range: [f64; 2],
 }
 
+/// One sampler's ratios to one baseline.
+#[derive(Debug, Clone, Serialize)]
+pub struct BaselineRatios {
+    /// The baseline's name.
+    pub baseline: String,
+    /// One entry per [`METRICS`] metric.
+    pub metrics: Vec<PooledMetric>,
+}
+
 /// One sampler's numbers over the study.
 #[derive(Debug, Clone, Serialize)]
 pub struct SamplerSummary {
     /// The sampler's name.
     pub sampler: String,
-    /// One entry per [`METRICS`] metric.
-    pub metrics: Vec<PooledMetric>,
+    /// Its ratios to each baseline, in the order of
+    /// [`StudyConfig::baselines`].
+    pub ratios: Vec<BaselineRatios>,
     /// Its error structure.
     pub structure: StructureSummary,
 }
 
 /// The summary of every sampler of `config` over `scenes`.
 pub fn summarise(config: &StudyConfig, scenes: &[SceneResult]) -> Vec<SamplerSummary> {
-    let column = |scene: &SceneResult, k: usize, f: &dyn Fn(&super::StudyRun) -> f64| {
-        scene.samplers[k].runs.iter().map(f).collect::<Vec<f64>>()
-    };
-    let base = config
-        .samplers
-        .iter()
-        .position(|s| *s == config.baseline)
-        .unwrap_or(0);
     config
         .samplers
         .iter()
         .enumerate()
         .map(|(k, name)| {
-            let metrics = METRICS
+            let ratios = config
+                .baselines
                 .iter()
-                .map(|&(metric, f)| {
-                    let ratios: Vec<Option<PairedRatio>> = scenes
-                        .iter()
-                        .map(|s| {
-                            let own = column(s, k, &|r| f(&r.quality));
-                            let baseline = column(s, base, &|r| f(&r.quality));
-                            paired_ratio(&own, &baseline)
-                        })
-                        .collect();
-                    let defined: Vec<PairedRatio> = ratios.iter().flatten().copied().collect();
-                    PooledMetric {
-                        metric,
-                        pooled: pooled_ratio(&defined),
-                        scenes: ratios,
+                .map(|b| {
+                    let base = config.samplers.iter().position(|s| s == b).unwrap_or(0);
+                    BaselineRatios {
+                        baseline: b.as_str().to_string(),
+                        metrics: METRICS
+                            .iter()
+                            .map(|&(metric, f)| pooled_metric(scenes, k, base, metric, f))
+                            .collect(),
                     }
                 })
                 .collect();
@@ -102,9 +100,34 @@ pub fn summarise(config: &StudyConfig, scenes: &[SceneResult]) -> Vec<SamplerSum
             };
             SamplerSummary {
                 sampler: name.as_str().to_string(),
-                metrics,
+                ratios,
                 structure,
             }
         })
         .collect()
+}
+
+fn column(scene: &SceneResult, k: usize, f: &dyn Fn(&StudyRun) -> f64) -> Vec<f64> {
+    scene.samplers[k].runs.iter().map(f).collect()
+}
+
+/// Metric `metric` (value `f`) of sampler `k` against sampler `base`:
+/// per scene and pooled.
+fn pooled_metric(
+    scenes: &[SceneResult],
+    k: usize,
+    base: usize,
+    metric: &'static str,
+    f: MetricOf,
+) -> PooledMetric {
+    let ratios: Vec<Option<PairedRatio>> = scenes
+        .iter()
+        .map(|s| paired_ratio(&column(s, k, &f), &column(s, base, &f)))
+        .collect();
+    let defined: Vec<PairedRatio> = ratios.iter().flatten().copied().collect();
+    PooledMetric {
+        metric,
+        pooled: pooled_ratio(&defined),
+        scenes: ratios,
+    }
 }

@@ -3,8 +3,9 @@
 //! run's measures and the summaries).
 //!
 //! `study.csv` columns: `scope` (a scene's name, or `all` for the pooled
-//! row), `sampler`, `metric` (`masked_mse`, `blurred_mse`, `flip`: ratios
-//! to the baseline; `structure`: the mean error structure), `value`,
+//! row), `sampler`, `baseline` (empty for `structure`), `metric`
+//! (`masked_mse`, `blurred_mse`, `flip`, `mse`: ratios to the baseline;
+//! `structure`: the mean error structure), `value`,
 //! `ci_low`, `ci_high` (the 95 % interval over seeds), `ci_scenes_low`,
 //! `ci_scenes_high` (pooled rows: the interval with scenes as a sample),
 //! `n` (seeds of a scene row, scenes of a pooled row). Undefined values are
@@ -26,7 +27,7 @@ pub fn write_all(config: &StudyConfig, results: &StudyResults) -> Result<Vec<Pat
     std::fs::create_dir_all(&config.out)?;
     let files = [
         ("study.md", markdown(config, results)),
-        ("study.csv", csv(config, results)),
+        ("study.csv", csv(results)),
         ("study.json", json_text(config, results)?),
     ];
     let mut written = Vec::new();
@@ -55,14 +56,19 @@ fn interval(ci: Option<[f64; 2]>) -> String {
 
 fn settings_line(config: &StudyConfig) -> String {
     format!(
-        "{} scenes at {}x{}, {} spp, seeds 0..{}, references of {} spp; ratios to `{}`.",
+        "{} scenes at {}x{}, {} spp, seeds 0..{}, references of {} spp; ratios to `{}`.{}",
         config.scenes.len(),
         config.resolution[0],
         config.resolution[1],
         config.spp,
         config.runs,
         config.ref_spp,
-        config.baseline.as_str()
+        config.baselines[0].as_str(),
+        if config.baselines.len() > 1 {
+            " Masked MSE ratios to the other baselines follow the main tables."
+        } else {
+            ""
+        }
     )
 }
 
@@ -85,7 +91,7 @@ pub fn markdown(config: &StudyConfig, results: &StudyResults) -> String {
     md.push_str("|---|---|---|---|---|---|---|---|---|---|\n");
     for s in &results.samplers {
         let mut row = format!("| `{}` ", s.sampler);
-        for (m, metric) in s.metrics.iter().enumerate() {
+        for (m, metric) in s.ratios[0].metrics.iter().take(3).enumerate() {
             let p = metric.pooled;
             let _ = write!(
                 row,
@@ -106,7 +112,7 @@ pub fn markdown(config: &StudyConfig, results: &StudyResults) -> String {
         md.push_str(&row);
     }
     scene_matrix(&mut md, results, "Masked MSE ratio per scene", &|s, k| {
-        s.metrics[0].scenes[k].map_or("–".into(), |r| num(r.ratio))
+        s.ratios[0].metrics[0].scenes[k].map_or("–".into(), |r| num(r.ratio))
     });
     scene_matrix(
         &mut md,
@@ -114,6 +120,26 @@ pub fn markdown(config: &StudyConfig, results: &StudyResults) -> String {
         "Structure per scene (mean over seeds)",
         &|s, k| num(s.structure.scenes[k].mean),
     );
+    for (b, baseline) in config.baselines.iter().enumerate().skip(1) {
+        let _ = write!(
+            md,
+            "\n## Masked MSE ratio to `{}`\n\n| sampler | ratio | 95 % (seeds) \
+             | 95 % (scenes) | scene range |\n|---|---|---|---|---|\n",
+            baseline.as_str()
+        );
+        for s in &results.samplers {
+            let p = s.ratios[b].metrics[0].pooled;
+            let _ = writeln!(
+                md,
+                "| `{}` | {} | {} | {} | {} |",
+                s.sampler,
+                p.map_or("–".into(), |p| num(p.ratio)),
+                interval(p.map(|p| p.ci95)),
+                interval(p.and_then(|p| p.ci95_scenes)),
+                interval(p.map(|p| p.range))
+            );
+        }
+    }
     md.push_str("\n## Scenes\n\n| scene | source | pixels kept | reference |\n|---|---|---|---|\n");
     for scene in &results.scenes {
         let _ = writeln!(
@@ -162,16 +188,20 @@ fn field(v: Option<f64>) -> String {
 }
 
 /// `study.csv` (columns in the module doc).
-pub fn csv(config: &StudyConfig, results: &StudyResults) -> String {
-    let _ = config;
-    let mut out =
-        String::from("scope,sampler,metric,value,ci_low,ci_high,ci_scenes_low,ci_scenes_high,n\n");
+pub fn csv(results: &StudyResults) -> String {
+    let mut out = String::from(
+        "scope,sampler,baseline,metric,value,ci_low,ci_high,ci_scenes_low,ci_scenes_high,n\n",
+    );
     for s in &results.samplers {
-        for m in &s.metrics {
+        let by_baseline = s
+            .ratios
+            .iter()
+            .flat_map(|r| r.metrics.iter().map(move |m| (&r.baseline, m)));
+        for (b, m) in by_baseline {
             for (scene, r) in results.scenes.iter().zip(&m.scenes) {
                 let _ = writeln!(
                     out,
-                    "{},{},{},{},{},{},,,{}",
+                    "{},{},{b},{},{},{},{},,,{}",
                     scene.name,
                     s.sampler,
                     m.metric,
@@ -184,7 +214,7 @@ pub fn csv(config: &StudyConfig, results: &StudyResults) -> String {
             let p = m.pooled;
             let _ = writeln!(
                 out,
-                "all,{},{},{},{},{},{},{},{}",
+                "all,{},{b},{},{},{},{},{},{},{}",
                 s.sampler,
                 m.metric,
                 field(p.map(|p| p.ratio)),
@@ -198,7 +228,7 @@ pub fn csv(config: &StudyConfig, results: &StudyResults) -> String {
         for (scene, st) in results.scenes.iter().zip(&s.structure.scenes) {
             let _ = writeln!(
                 out,
-                "{},{},structure,{},{},{},,,{}",
+                "{},{},,structure,{},{},{},,,{}",
                 scene.name,
                 s.sampler,
                 field(Some(st.mean)),
@@ -209,7 +239,7 @@ pub fn csv(config: &StudyConfig, results: &StudyResults) -> String {
         }
         let _ = writeln!(
             out,
-            "all,{},structure,{},,,,,{}",
+            "all,{},,structure,{},,,,,{}",
             s.sampler,
             field(Some(s.structure.mean)),
             results.scenes.len()
@@ -242,7 +272,7 @@ pub fn json_text(config: &StudyConfig, results: &StudyResults) -> Result<String>
         "settings": {
             "scenes": scenes,
             "samplers": config.samplers.iter().map(|s| s.as_str()).collect::<Vec<_>>(),
-            "baseline": config.baseline.as_str(),
+            "baselines": config.baselines.iter().map(|s| s.as_str()).collect::<Vec<_>>(),
             "width": config.resolution[0],
             "height": config.resolution[1],
             "spp": config.spp,
