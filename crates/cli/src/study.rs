@@ -45,7 +45,9 @@ by name (`none`: only the FILEs).\n\
 Defaults: 64x64, 16 spp, 8 runs, references of 1024 spp, ratios to sobol: a\n\
 few minutes on 2 cores. --quick: 16x16, 4 spp, 2 runs, references of 32 spp,\n\
 scenes direct and gi (seconds, for tests). Writes study.md, study.csv and\n\
-study.json to --out; references are cached in lowdisc-ref-cache beside it.";
+study.json to --out (--save-renders: also the references and every\n\
+sampler's seed-0 render as PFM); references are cached in lowdisc-ref-cache\n\
+beside it.";
 
 /// `study` arguments.
 #[derive(Debug, Args)]
@@ -90,6 +92,10 @@ pub struct StudyArgs {
     /// Output folder.
     #[arg(long, value_name = "DIR", default_value = "study")]
     out: PathBuf,
+    /// Also write each scene's reference and every sampler's seed-0 render
+    /// to DIR/renders/SCENE/ (PFM).
+    #[arg(long)]
+    save_renders: bool,
     /// A small study of seconds (for tests).
     #[arg(long)]
     quick: bool,
@@ -188,6 +194,7 @@ impl StudyArgs {
             max_depth: self.maxdepth,
             threads: self.threads,
             out: self.out,
+            save_renders: self.save_renders,
             command: std::env::args().collect(),
         };
         config.validate()?;

@@ -68,8 +68,9 @@ fn quick_study_writes_consistent_tables() {
         header.starts_with("scope,sampler,baseline,metric,value"),
         "{header}"
     );
-    // Per sampler: 2 baselines x 4 metrics x (2 scenes + pooled) + structure x 3.
-    assert_eq!(csv.lines().count(), 1 + 3 * (2 * 4 * 3 + 3));
+    // Per sampler: 2 baselines x 4 metrics x (2 scenes + pooled), structure
+    // x 3 and the spectral peak.
+    assert_eq!(csv.lines().count(), 1 + 3 * (2 * 4 * 3 + 3 + 1));
     // The second baseline: independent against itself is 1, and sobol's
     // ratio to independent is the inverse of independent's to sobol.
     let to = |s: usize, b: usize| {

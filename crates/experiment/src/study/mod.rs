@@ -17,9 +17,11 @@
 //!
 //! **Structure.** The error image is the render minus the reference,
 //! averaged over the three channels, with the masked pixels set to 0;
-//! its structure is `lowdisc_metrics::nyquist_power_ratio` at the default
-//! cutoff 0.4: about 1 for white noise, about 25 for a pure pixel
-//! checkerboard, below 1 for an error of mostly low frequencies.
+//! its structure is `lowdisc_metrics::nyquist_power` at the default cutoff
+//! 0.4 (power near the checkerboard, column and row Nyquist frequencies
+//! over the mean power), summarised by the largest of the three: about 1
+//! for white noise, about 25 for a pure pixel checkerboard or stripes,
+//! below 1 for an error of mostly low frequencies.
 
 pub mod collection;
 pub mod summary;
@@ -31,6 +33,7 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_image::{PixelMask, RgbImage};
+use lowdisc_metrics::{NyquistPower, SpectralPeak};
 use lowdisc_render::preset::ScenePreset;
 use serde::Serialize;
 
@@ -92,6 +95,9 @@ pub struct StudyConfig {
     pub threads: Option<usize>,
     /// Output folder (the reference cache is `lowdisc-ref-cache` beside it).
     pub out: PathBuf,
+    /// Also write each scene's reference and every sampler's seed-0 render
+    /// as `renders/SCENE/reference.pfm` and `renders/SCENE/SAMPLER.pfm`.
+    pub save_renders: bool,
     /// The command line, kept in `study.json`.
     pub command: Vec<String>,
 }
@@ -173,7 +179,9 @@ pub struct StudyRun {
     /// Masked errors, blurred MSE and FLIP.
     pub quality: Quality,
     /// The error image's [`error_structure`].
-    pub structure: f64,
+    pub structure: NyquistPower,
+    /// The error image's strongest spectral band ([`error_peak`]).
+    pub peak: SpectralPeak,
 }
 
 /// One sampler's runs on one scene.
@@ -213,8 +221,38 @@ pub struct StudyResults {
 
 /// The structure of the error of `image` against `reference`: the
 /// channel-mean error with the pixels `mask` drops set to 0, measured by
-/// `lowdisc_metrics::nyquist_power_ratio` at its default cutoff.
-pub fn error_structure(image: &RgbImage, reference: &RgbImage, mask: &PixelMask) -> Result<f64> {
+/// `lowdisc_metrics::nyquist_power` at its default cutoff.
+pub fn error_structure(
+    image: &RgbImage,
+    reference: &RgbImage,
+    mask: &PixelMask,
+) -> Result<NyquistPower> {
+    let (w, h) = (image.width(), image.height());
+    let error = error_image(image, reference, mask)?;
+    let cutoff = lowdisc_metrics::structure::DEFAULT_CUTOFF;
+    Ok(lowdisc_metrics::nyquist_power(&error, w, h, cutoff)?)
+}
+
+/// The strongest spectral band of the same error image as
+/// [`error_structure`]'s (`lowdisc_metrics::spectral_peak`, default cell).
+pub fn error_peak(
+    image: &RgbImage,
+    reference: &RgbImage,
+    mask: &PixelMask,
+) -> Result<SpectralPeak> {
+    let error = error_image(image, reference, mask)?;
+    let cell = lowdisc_metrics::structure::DEFAULT_CELL;
+    Ok(lowdisc_metrics::spectral_peak(
+        &error,
+        image.width(),
+        image.height(),
+        cell,
+    )?)
+}
+
+/// The channel-mean error of `image` against `reference`, 0 where `mask`
+/// drops the pixel.
+fn error_image(image: &RgbImage, reference: &RgbImage, mask: &PixelMask) -> Result<Vec<f64>> {
     let (w, h) = (image.width(), image.height());
     if (reference.width(), reference.height()) != (w, h) || (mask.width(), mask.height()) != (w, h)
     {
@@ -236,8 +274,7 @@ pub fn error_structure(image: &RgbImage, reference: &RgbImage, mask: &PixelMask)
             }
         })
         .collect();
-    let cutoff = lowdisc_metrics::structure::DEFAULT_CUTOFF;
-    Ok(lowdisc_metrics::nyquist_power_ratio(&error, w, h, cutoff)?)
+    Ok(error)
 }
 
 /// The scene's description in the tables.
@@ -313,12 +350,20 @@ fn study_scene(
             let crate::assemble::Rendered::Image(image) = out.rendered else {
                 bail!("a run left sums, not an image");
             };
+            if config.save_renders && seed == 0 {
+                let dir = config.out.join("renders").join(&study_scene.name);
+                std::fs::create_dir_all(&dir)
+                    .with_context(|| format!("cannot create `{}`", dir.display()))?;
+                lowdisc_image::write_pfm(dir.join(format!("{}.pfm", name.as_str())), &image)?;
+                lowdisc_image::write_pfm(dir.join("reference.pfm"), &reference)?;
+            }
             runs.push(StudyRun {
                 seed,
                 time_s,
                 mse: crate::metrics::measure(&image, &reference)?.linear.mse,
                 quality: measures.evaluator.measure(&image, &reference)?,
                 structure: error_structure(&image, &reference, measures.evaluator.mask())?,
+                peak: error_peak(&image, &reference, measures.evaluator.mask())?,
             });
         }
         stage.end();
@@ -351,8 +396,10 @@ mod tests {
         let all = PixelMask::all(16, 16);
         // 16 pixels: k = -8, -7 and 7 reach |k / 16| >= 0.4, 9 corner bins.
         let s = error_structure(&board, &reference, &all).unwrap();
-        assert!((s - 256.0 / 9.0).abs() < 1e-3, "{s}");
-        assert_eq!(error_structure(&reference, &reference, &all).unwrap(), 0.0);
+        assert!((s.checkerboard - 256.0 / 9.0).abs() < 1e-3, "{s:?}");
+        assert!(s.rows.abs() < 1e-6 && s.columns.abs() < 1e-6, "{s:?}");
+        let none = error_structure(&reference, &reference, &all).unwrap();
+        assert_eq!(none.max(), 0.0);
         let small = RgbImage::filled(8, 8, [0.5; 3]).unwrap();
         assert!(error_structure(&small, &reference, &all).is_err());
     }
@@ -368,6 +415,7 @@ mod tests {
             ref_spp: 8,
             max_depth: 5,
             threads: Some(1),
+            save_renders: false,
             out: std::env::temp_dir().join("lowdisc-study-test").join("out"),
             command: Vec::new(),
         }

@@ -32,11 +32,20 @@ pub struct PooledMetric {
     pub pooled: Option<PooledRatio>,
 }
 
-/// The error structure of one sampler over the scenes.
+/// The error structure of one sampler over the scenes: the largest of the
+/// three Nyquist regions' power ratios of each render, and each region's
+/// mean.
 #[derive(Debug, Clone, Serialize)]
 pub struct StructureSummary {
     /// Mean, se and interval over the seeds of each scene, in scene order.
     pub scenes: Vec<Summary>,
+    /// The mean over every render of every scene of the checkerboard,
+    /// columns and rows ratios.
+    pub regions: [f64; 3],
+    /// The mean over every render of every scene of the spectral peak ratio.
+    pub peak: f64,
+    /// The frequency of the strongest peak of any render.
+    pub peak_frequency: [f64; 2],
     /// The mean of the scenes' means.
     pub mean: f64,
     /// The smallest and largest scene mean.
@@ -87,10 +96,25 @@ pub fn summarise(config: &StudyConfig, scenes: &[SceneResult]) -> Vec<SamplerSum
                 .collect();
             let per_scene: Vec<Summary> = scenes
                 .iter()
-                .map(|s| Summary::of(&column(s, k, &|r| r.structure)))
+                .map(|s| Summary::of(&column(s, k, &|r| r.structure.max())))
                 .collect();
             let means: Vec<f64> = per_scene.iter().map(|s| s.mean).collect();
+            let all: Vec<&StudyRun> = scenes.iter().flat_map(|s| &s.samplers[k].runs).collect();
+            let region = |f: fn(&StudyRun) -> f64| {
+                all.iter().map(|r| f(r)).sum::<f64>() / all.len().max(1) as f64
+            };
+            let strongest = all
+                .iter()
+                .map(|r| r.peak)
+                .max_by(|a, b| a.ratio.total_cmp(&b.ratio));
             let structure = StructureSummary {
+                peak: region(|r| r.peak.ratio),
+                peak_frequency: strongest.map_or([f64::NAN; 2], |p| p.frequency),
+                regions: [
+                    region(|r| r.structure.checkerboard),
+                    region(|r| r.structure.columns),
+                    region(|r| r.structure.rows),
+                ],
                 mean: means.iter().sum::<f64>() / means.len().max(1) as f64,
                 range: [
                     means.iter().copied().fold(f64::INFINITY, f64::min),

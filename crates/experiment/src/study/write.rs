@@ -5,7 +5,8 @@
 //! `study.csv` columns: `scope` (a scene's name, or `all` for the pooled
 //! row), `sampler`, `baseline` (empty for `structure`), `metric`
 //! (`masked_mse`, `blurred_mse`, `flip`, `mse`: ratios to the baseline;
-//! `structure`: the mean error structure), `value`,
+//! `structure`: the mean error structure; `spectral_peak`: the mean
+//! spectral peak, pooled rows only), `value`,
 //! `ci_low`, `ci_high` (the 95 % interval over seeds), `ci_scenes_low`,
 //! `ci_scenes_high` (pooled rows: the interval with scenes as a sample),
 //! `n` (seeds of a scene row, scenes of a pooled row). Undefined values are
@@ -81,8 +82,9 @@ pub fn markdown(config: &StudyConfig, results: &StudyResults) -> String {
         md,
         "Ratios: geometric mean over scenes of each scene's paired ratio (geometric \
          mean over seeds), 95 % intervals over seeds (these scenes) and with the scenes \
-         as a sample. Structure: error power at the Nyquist corner over white noise's \
-         (1 = white noise, about 25 = a pixel checkerboard), mean over scenes.\n"
+         as a sample. Structure: error power near the Nyquist frequencies over white noise's, \
+         the largest of the checkerboard, column and row regions (1 = white noise, \
+         about 25 = a pure pixel checkerboard or stripes), mean over scenes.\n"
     );
     md.push_str(
         "| sampler | masked MSE ratio | 95 % (seeds) | 95 % (scenes) | scene range \
@@ -242,6 +244,13 @@ pub fn csv(results: &StudyResults) -> String {
             "all,{},,structure,{},,,,,{}",
             s.sampler,
             field(Some(s.structure.mean)),
+            results.scenes.len()
+        );
+        let _ = writeln!(
+            out,
+            "all,{},,spectral_peak,{},,,,,{}",
+            s.sampler,
+            field(Some(s.structure.peak)),
             results.scenes.len()
         );
     }
