@@ -82,6 +82,7 @@ fn quick_study_writes_consistent_tables() {
     assert_eq!(to(0, 1), 1.0);
     assert!((to(1, 1) * to(0, 0) - 1.0).abs() < 1e-12);
     assert!(md.contains("## Masked MSE ratio to `independent`"), "{md}");
+    assert!(md.contains("| spectral peak |"), "{md}");
     // A second run reuses the cached references and gives the same numbers.
     let again = dir.join("again");
     let o = run_quick(&again, &baselines);

@@ -122,6 +122,24 @@ pub fn markdown(config: &StudyConfig, results: &StudyResults) -> String {
         "Structure per scene (mean over seeds)",
         &|s, k| num(s.structure.scenes[k].mean),
     );
+    md.push_str(
+        "\n## Structure by region and spectral peak (mean over every render)\n\n\
+         | sampler | checkerboard (½, ½) | columns (½, 0) | rows (0, ½) \
+         | spectral peak | strongest at (f_x, f_y) |\n|---|---|---|---|---|---|\n",
+    );
+    for s in &results.samplers {
+        let [c, x, y] = s.structure.regions;
+        let [fx, fy] = s.structure.peak_frequency;
+        let _ = writeln!(
+            md,
+            "| `{}` | {} | {} | {} | {} | ({fx:+.2}, {fy:.2}) |",
+            s.sampler,
+            num(c),
+            num(x),
+            num(y),
+            num(s.structure.peak)
+        );
+    }
     for (b, baseline) in config.baselines.iter().enumerate().skip(1) {
         let _ = write!(
             md,
