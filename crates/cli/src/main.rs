@@ -15,8 +15,9 @@
 //! - `points`, `figure`, `discrepancy` (with `metric_rows`, `pointfile`),
 //!   `spectrum`, `claim` (with `claim_report`), `render_cmd` (with
 //!   `render_stats`), `split_cmd` (`merge`, and the parts `render` writes),
-//!   `experiment` (with `experiment_units`: plan, unit, merge, status): the
-//!   subcommands; the experiment itself is the library `lowdisc-experiment`;
+//!   `experiment` (with `experiment_units`: plan, unit, merge, status),
+//!   `study`: the subcommands; the experiment and the study themselves are
+//!   the library `lowdisc-experiment`;
 //! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
 //! - `sampler_help`: the sampler lists of `--help`, from the catalog's table;
 //! - `limits`: the default work and memory limits and their checks;
@@ -46,6 +47,7 @@ mod render_stats;
 mod sampler_help;
 mod spectrum;
 mod split_cmd;
+mod study;
 
 use std::io::{self, Write};
 use std::process::ExitCode;
@@ -84,6 +86,9 @@ enum Command {
     /// The paper's experiment: every sampler against a converged reference, with a report.
     #[command(long_about = experiment::LONG_ABOUT)]
     Experiment(Box<experiment::ExperimentCommand>),
+    /// Samplers compared over a collection of scenes: pooled error ratios and error structure.
+    #[command(long_about = study::LONG_ABOUT)]
+    Study(Box<study::StudyArgs>),
     /// Merge the parts of a split render (tiles, sample ranges) into one EXR.
     #[command(long_about = split_cmd::LONG_ABOUT)]
     Merge(split_cmd::MergeArgs),
@@ -100,6 +105,7 @@ fn run(command: Command) -> anyhow::Result<()> {
         Command::Render(args) => render_cmd::run(&args.into_config()?),
         Command::Experiment(command) => command.run(),
         Command::Merge(args) => split_cmd::run(&args),
+        Command::Study(args) => study::run(*args),
         Command::Discrepancy(args) => {
             let config = args.into_config()?;
             discrepancy::run(&config, io::stdout().lock())

@@ -120,6 +120,13 @@ pub(crate) struct Cursor<'a> {
 }
 
 impl<'a> Cursor<'a> {
+    /// A cursor at the first of `units`.
+    pub(crate) fn new(units: &'a [Unit]) -> Cursor<'a> {
+        Cursor {
+            units: units.iter(),
+        }
+    }
+
     /// The unit of `work`, the next in the plan.
     pub(crate) fn next(&mut self, work: Work) -> Result<&'a Unit> {
         match self.units.next() {
@@ -169,9 +176,7 @@ pub fn assemble(
     observer: &dyn Progress,
 ) -> Result<(Results, Images)> {
     let config = &plan.config;
-    let mut cursor = Cursor {
-        units: plan.units.iter(),
-    };
+    let mut cursor = Cursor::new(&plan.units);
     let evaluator = &measures.evaluator;
     let (main, ref_info) = reference(plan, measures, Target::Main, &mut cursor, source, observer)?;
     let mut samplers = Vec::new();

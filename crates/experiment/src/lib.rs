@@ -31,6 +31,8 @@
 //! - [`results`]: the numbers measured, as `results.json` holds them;
 //! - [`figure`]: the 2x2-pixel point figure's film positions and panels;
 //! - [`report`]: images, plots, `report.md`, `report.html`, `results.json`;
+//! - [`study`]: the paired comparison repeated over a collection of scenes
+//!   and pooled per sampler (`lowdisc study`);
 //! - [`progress`]: the observer through which a run reports what it does
 //!   (the library never prints).
 //!
@@ -106,6 +108,7 @@ pub mod run;
 pub mod scene;
 pub mod stats;
 pub mod status;
+pub mod study;
 pub mod sweep;
 pub mod units;
 

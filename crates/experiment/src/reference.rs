@@ -9,9 +9,11 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use lowdisc_image::RgbImage;
 
+use crate::run::Subject;
+
 use crate::assemble::{Cursor, Measures, UnitSource, join_cut};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
-use crate::plan::{Plan, Target, Work, reference_cut, reference_settings};
+use crate::plan::{Plan, Target, Unit, Work, reference_cut, reference_settings};
 use crate::progress::{Progress, Stage, samples};
 use crate::results::ReferenceInfo;
 use crate::stats::{FNV_OFFSET, fnv1a};
@@ -23,6 +25,57 @@ pub fn cached_references(config: &ExperimentConfig, scene_hash: u64) -> [bool; 2
         let file = cache_file(config, target, scene_hash);
         file.is_file() && lowdisc_image::read_image(&file).is_ok()
     })
+}
+
+/// The main reference of `config` on `subject` (its content hashing to
+/// `scene_hash`), without the rest of
+/// an experiment: read from the cache, or rendered in this process in the
+/// pieces a plan would cut it into, joined and cached. `measures` gives the
+/// film; the key and the image are those of [`reference`], so an
+/// experiment and a study of the same scene and settings share the file.
+pub fn main_reference(
+    config: &ExperimentConfig,
+    subject: &Subject,
+    scene_hash: u64,
+    measures: &Measures,
+    observer: &dyn Progress,
+) -> Result<(RgbImage, ReferenceInfo)> {
+    let cached = cached_references(config, scene_hash);
+    let units: Vec<Unit> = if cached[0] {
+        Vec::new()
+    } else {
+        reference_cut(config, Target::Main)
+            .pieces()
+            .enumerate()
+            .map(|(index, piece)| Unit {
+                index,
+                work: Work::Reference {
+                    target: Target::Main,
+                    piece,
+                },
+            })
+            .collect()
+    };
+    let plan = Plan {
+        config: config.clone(),
+        scene_hash,
+        cached,
+        units,
+    };
+    let mut cursor = Cursor::new(&plan.units);
+    let mut source = crate::units::InProcess {
+        config,
+        subject,
+        scene_hash,
+    };
+    reference(
+        &plan,
+        measures,
+        Target::Main,
+        &mut cursor,
+        &mut source,
+        observer,
+    )
 }
 
 /// Reference `target` of the plan: read from the cache when the plan says

@@ -9,7 +9,8 @@ use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::plan::{Target, reference_cut};
 use crate::results::Results;
 
-fn cpu_model() -> String {
+/// The CPU's model name from `/proc/cpuinfo` (`unknown` elsewhere).
+pub(crate) fn cpu_model() -> String {
     std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {
@@ -21,7 +22,8 @@ fn cpu_model() -> String {
         .unwrap_or_else(|| "unknown".into())
 }
 
-fn git_hash() -> Option<String> {
+/// The short hash of the source tree's commit, when git can tell.
+pub(crate) fn git_hash() -> Option<String> {
     let out = std::process::Command::new("git")
         .args(["rev-parse", "--short", "HEAD"])
         .current_dir(env!("CARGO_MANIFEST_DIR"))

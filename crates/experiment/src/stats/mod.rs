@@ -10,12 +10,16 @@
 //!   baseline from *paired* runs (run `i` of both uses seed index `i`),
 //!   computed on the logarithms of the per-seed ratios, with its interval;
 //! - [`Verdict`]: "better", "worse" or "not distinguishable", from whether
-//!   the ratio's interval excludes 1.
+//!   the ratio's interval excludes 1;
+//! - [`PooledRatio`] ([`pooled`]): the paired ratios of several scenes as
+//!   one geometric mean, with an interval over seeds and one over scenes.
 
 pub mod paired;
+pub mod pooled;
 pub mod summary;
 
 pub use paired::{PairedRatio, Verdict, paired_ratio};
+pub use pooled::{PooledRatio, pooled_ratio};
 pub use summary::{CONFIDENCE, Summary, t_quantile};
 
 use serde::Serialize;
