@@ -7,6 +7,7 @@
 //! [`SurfaceHit`] with points, normals and texture coordinates.
 
 pub mod bilinear;
+pub mod differentials;
 pub mod disk;
 pub mod loop_subdiv;
 pub mod shape_set;
@@ -14,6 +15,7 @@ pub mod sphere;
 pub mod triangle;
 
 pub use bilinear::bilinear_to_triangles;
+pub use differentials::ShadingGeometry;
 pub use disk::Disk;
 pub use loop_subdiv::loop_subdivide;
 pub use shape_set::{Prim, ShapeSet};
