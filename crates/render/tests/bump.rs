@@ -172,7 +172,7 @@ fn a_bumped_plane_renders_differently_from_the_flat_one_and_stays_finite() {
     // Eight texels of a sawtooth: a ridged displacement across u.
     let ramp: Vec<[f32; 3]> = (0..8).map(|i| [(i % 4) as f32 / 3.0; 3]).collect();
     let image = RgbImage::from_pixels(8, 1, ramp).unwrap();
-    lowdisc_image::write_pfm(&dir.join("ridges.pfm"), &image).unwrap();
+    lowdisc_image::write_pfm(dir.join("ridges.pfm"), &image).unwrap();
     let texture = "Texture \"ridges\" \"float\" \"imagemap\" \"string filename\" \"ridges.pfm\" \
                    \"float scale\" 0.05";
     let flat = load(&dir, &plane_scene(texture, "Material \"diffuse\""));
@@ -191,7 +191,7 @@ fn a_bumped_plane_renders_differently_from_the_flat_one_and_stays_finite() {
     let differing = a
         .iter()
         .zip(&b)
-        .filter(|(p, q)| close(Vec3::from_array(**p), Vec3::from_array(**q), 1e-3) == false)
+        .filter(|(p, q)| !close(Vec3::from_array(**p), Vec3::from_array(**q), 1e-3))
         .count();
     assert!(
         differing > a.len() / 2,
@@ -226,7 +226,7 @@ fn a_normal_map_image_tilts_the_shading_normal() {
     let texel = [(s + 1.0) / 2.0, 0.5, (c + 1.0) / 2.0];
     let image = RgbImage::filled(4, 4, texel).unwrap();
     let dir = temp_dir("normalmap");
-    lowdisc_image::write_pfm(&dir.join("tilt.pfm"), &image).unwrap();
+    lowdisc_image::write_pfm(dir.join("tilt.pfm"), &image).unwrap();
     let l = load(
         &dir,
         &plane_scene("", "Material \"diffuse\" \"string normalmap\" \"tilt.pfm\""),
