@@ -46,9 +46,13 @@ fn scene(textures: &str, occluder: Option<&str>) -> String {
 }
 
 fn render_pixels(l: &LoadedScene) -> Vec<[f32; 3]> {
+    render_with_threads(l, 2)
+}
+
+fn render_with_threads(l: &LoadedScene, threads: usize) -> Vec<[f32; 3]> {
     let view = View::native(&l.view).unwrap();
     let opts = RenderOptions {
-        threads: Some(2),
+        threads: Some(threads),
         tile_size: 8,
         ..RenderOptions::new(SamplerName::ZSobol, 5, 4)
     };
@@ -161,4 +165,17 @@ fn an_alpha_on_an_area_light_is_refused_without_approximate() {
         "{:?}",
         l.warnings
     );
+}
+
+#[test]
+fn fractional_cut_outs_and_bumps_render_the_same_whatever_the_thread_count() {
+    let textures = "Texture \"ridges\" \"float\" \"checkerboard\" \"float tex1\" 0 \
+                    \"float tex2\" 0.02 \"float uscale\" 8";
+    let occluder = "\"float alpha\" 0.5\nMaterial \"diffuse\" \"texture displacement\" \"ridges\"\n\
+                    Shape \"sphere\" \"float radius\" 0.5 \"float alpha\" 0.3";
+    let l = load("threads", &scene(textures, Some(occluder)), false).unwrap();
+    assert!(l.warnings.is_empty(), "{:?}", l.warnings);
+    let one = render_with_threads(&l, 1);
+    assert!(one.iter().flatten().all(|v| v.is_finite()));
+    assert_eq!(one, render_with_threads(&l, 3));
 }
