@@ -54,11 +54,11 @@ const CASES: &[(&str, &str, &str, &str, &str)] = &[
         "Shape \"curve\"",
     ),
     (
-        "bump.pbrt",
+        "hair.pbrt",
         "",
-        "Material \"diffuse\" \"float displacement\" 0.1\n",
-        "bump.pbrt:5:20:",
-        "bump mapping",
+        "Material \"hair\"\n",
+        "hair.pbrt:5:1:",
+        "material \"hair\"",
     ),
     (
         "bdpt.pbrt",

@@ -7,6 +7,9 @@
 //! (spheres, disks) in a packet's lanes are tested one by one. Queries run
 //! with the lanes [`LaneSet::detect`] chose when the accelerator was built
 //! (AVX2 or portable), with bit-identical results either way.
+//!
+//! Primitives with an alpha cut-out ([`crate::geometry::alpha`]) are
+//! marked per packet lane, so that only their hits pay for the alpha test.
 
 use crate::bvh::{BuildOptions, Bvh, BvhStats, EMPTY_SLOT, LEAF_LANES};
 use crate::geometry::triangle::{FlatFrame, PACKET_LANES, RayLanes, Tri8};
@@ -42,6 +45,9 @@ pub struct Accel {
     tris: Vec<Tri8>,
     /// Per group of slots: bit `l` set when lane `l` is another shape.
     others: Vec<u8>,
+    /// Per group of slots: bit `l` set when lane `l` has an alpha cut-out
+    /// (empty when no shape has one).
+    cut: Vec<u8>,
     /// Per primitive (input order): the triangle's [`FlatFrame`], if it has one.
     frames: Vec<Option<FlatFrame>>,
     bounds: Bounds3,
@@ -180,6 +186,21 @@ impl Accel {
                 (packet, others)
             })
             .unzip();
+        let cut = if shapes.has_alpha() {
+            (bvh.slots().chunks(LEAF_LANES))
+                .map(|group| {
+                    (group.iter().enumerate())
+                        .filter(|(_, id)| {
+                            prims
+                                .get(**id as usize)
+                                .is_some_and(|&p| shapes.alpha(p).is_some())
+                        })
+                        .fold(0u8, |m, (lane, _)| m | 1 << lane)
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
         let frames = (prims.par_iter())
             .map(|&p| match p {
                 Prim::Triangle { mesh, tri } => {
@@ -195,6 +216,7 @@ impl Accel {
             prims,
             tris,
             others,
+            cut,
             frames,
             bounds,
             lanes: LaneSet::detect(),
@@ -228,6 +250,12 @@ impl Accel {
         self.bounds
     }
 
+    /// The lanes of packet `p` that have an alpha cut-out.
+    #[inline(always)]
+    fn cut(&self, p: usize) -> u8 {
+        self.cut.get(p).copied().unwrap_or(0)
+    }
+
     /// Tests the primitives in slots `first..first + count`, recording in
     /// `best` the hit that [`Closest::beats`] the one found so far; returns
     /// its distance when it changed.
@@ -246,6 +274,7 @@ impl Accel {
         for p in packets(first, count) {
             let ids = &slots[LEAF_LANES * p..][..LEAF_LANES];
             let h = self.tris[p].intersect::<L, true>(l, rl, best.t);
+            let cut = self.cut(p);
             let mut m = h.mask;
             while m != 0 {
                 let lane = m.trailing_zeros() as usize;
@@ -256,17 +285,24 @@ impl Accel {
                         u: h.u[lane],
                         v: h.v[lane],
                     };
+                    if cut & (1 << lane) != 0 && !self.keeps(ids[lane], ray, &hit) {
+                        continue;
+                    }
                     best.set(ids[lane], hit);
                     found = Some(best.t);
                 }
             }
             let mut other = self.others[p] as u32;
             while other != 0 {
-                let id = ids[other.trailing_zeros() as usize];
+                let lane = other.trailing_zeros() as usize;
+                let id = ids[lane];
                 other &= other - 1;
-                let h = self
-                    .shapes
-                    .intersect(self.prims[id as usize], ray, best.bound());
+                let prim = self.prims[id as usize];
+                let h = if cut & (1 << lane) != 0 {
+                    self.shapes.intersect_alpha(prim, ray, best.bound())
+                } else {
+                    self.shapes.intersect(prim, ray, best.bound())
+                };
                 if let Some(h) = h.filter(|h| best.beats(h.t, id)) {
                     best.set(id, h);
                     found = Some(best.t);
@@ -290,23 +326,69 @@ impl Accel {
     ) -> bool {
         let slots = self.bvh.slots();
         for p in packets(first, count) {
-            if self.tris[p].any(l, rl, t_max) {
+            let cut = self.cut(p);
+            if cut == 0 {
+                if self.tris[p].any(l, rl, t_max) {
+                    return true;
+                }
+            } else if self.any_cut_triangle(l, rl, ray, p, t_max) {
                 return true;
             }
             let mut other = self.others[p] as u32;
             while other != 0 {
-                let id = slots[LEAF_LANES * p + other.trailing_zeros() as usize];
+                let lane = other.trailing_zeros() as usize;
+                let prim = self.prims[slots[LEAF_LANES * p + lane] as usize];
                 other &= other - 1;
-                if self
-                    .shapes
-                    .intersect(self.prims[id as usize], ray, t_max)
-                    .is_some()
-                {
+                let h = if cut & (1 << lane) != 0 {
+                    self.shapes.intersect_alpha(prim, ray, t_max)
+                } else {
+                    self.shapes.intersect(prim, ray, t_max)
+                };
+                if h.is_some() {
                     return true;
                 }
             }
         }
         false
+    }
+
+    /// True if a triangle of packet `p` (which has alpha cut-outs) is hit
+    /// in `(0, t_max)` where its alpha keeps the hit.
+    #[inline(always)]
+    fn any_cut_triangle<L: Lanes>(
+        &self,
+        l: L,
+        rl: &RayLanes<L>,
+        ray: &Ray,
+        p: usize,
+        t_max: f32,
+    ) -> bool {
+        let (cut, ids) = (
+            self.cut(p),
+            &self.bvh.slots()[LEAF_LANES * p..][..LEAF_LANES],
+        );
+        let h = self.tris[p].intersect::<L, false>(l, rl, t_max);
+        let mut m = h.mask;
+        while m != 0 {
+            let lane = m.trailing_zeros() as usize;
+            m &= m - 1;
+            let hit = PrimHit {
+                t: h.t[lane],
+                u: h.u[lane],
+                v: h.v[lane],
+            };
+            if cut & (1 << lane) == 0 || self.keeps(ids[lane], ray, &hit) {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// True when the hit `h` on primitive `id` (input order) along `ray`
+    /// counts under its alpha cut-out.
+    #[inline(never)]
+    fn keeps(&self, id: u32, ray: &Ray, h: &PrimHit) -> bool {
+        self.shapes.alpha_keeps_hit(self.prims[id as usize], ray, h)
     }
 
     /// Closest hit in `(0, t_max)` as (primitive index, primitive hit).

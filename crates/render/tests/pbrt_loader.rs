@@ -353,9 +353,9 @@ fn missing_features_are_errors_and_their_harmless_forms_are_not() {
     // (text after the camera, the error's place and feature)
     let missing = [
         (
-            "Shape \"sphere\" \"float alpha\" 0.5\n",
-            ":5:16:",
-            "alpha cut-out",
+            "AreaLightSource \"diffuse\"\nShape \"sphere\" \"float alpha\" 0.5\n",
+            ":6:16:",
+            "alpha cut-out on an area light",
         ),
         ("Shape \"cylinder\"\n", ":5:1:", "Shape \"cylinder\""),
         (

@@ -14,8 +14,11 @@
 //! hit's `uv` and position ([`BsdfContext`]); [`Material::Mix`] picks one of two
 //! materials per point. Textures are point-evaluated (no ray differentials; see
 //! [`crate::texture`]). Adding a material means adding a variant here and its
-//! arm in [`Material::bxdf_at`].
+//! arm in [`Material::bxdf_at`]. A material with a bump or normal map is a
+//! [`Material::Bumped`] (see [`bump`]): the integrator perturbs the shading
+//! geometry with [`Material::bump`] before building the BSDF.
 
+pub mod bump;
 mod defaults;
 mod mix;
 mod params;
@@ -28,6 +31,7 @@ use super::{Bsdf, Bxdf, BxdfModel};
 use crate::math::{Frame, Point2, Point3, Vec3};
 use crate::spectrum::{Colour, Rgb};
 use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
+pub use bump::{BUMP_DELTA, Bump, BumpedMaterial};
 pub use mix::{MixMaterial, mix_choice};
 pub use params::{ConductorSpec, Roughness};
 use std::sync::Arc;
@@ -123,6 +127,8 @@ pub enum Material {
     },
     /// pbrt `mix`: one of two materials per shading point.
     Mix(Arc<MixMaterial>),
+    /// A material with pbrt's `displacement` (bump map) or `normalmap`.
+    Bumped(Arc<BumpedMaterial>),
 }
 
 /// Where and how a material's BSDF is built.
@@ -251,6 +257,7 @@ impl Material {
         let albedo = |t: &SpectrumTexture| C::albedo(t.evaluate(&tc), w);
         match self {
             Material::Mix(m) => m.choose(ctx).bxdf_for(ctx, w),
+            Material::Bumped(b) => b.material.bxdf_for(ctx, w),
             Material::Diffuse { reflectance } => {
                 Bxdf::Diffuse(DiffuseBxdf::new(albedo(reflectance)))
             }
@@ -316,6 +323,17 @@ impl Material {
         }
     }
 
+    /// The bump or normal map of the material used at `ctx` (for a mix,
+    /// the material it chooses there), if it has one.
+    #[inline]
+    pub fn bump(&self, ctx: &BsdfContext) -> Option<&Bump> {
+        match self {
+            Material::Bumped(b) => Some(&b.bump),
+            Material::Mix(m) => m.choose(ctx).bump(ctx),
+            _ => None,
+        }
+    }
+
     /// True when no texture of the material varies (for a mix: neither side's
     /// nor the amount's).
     pub fn is_constant(&self) -> bool {
@@ -349,6 +367,7 @@ impl Material {
                 Material::Mix(m) => {
                     float(&m.amount) && m.materials.iter().all(Material::is_constant)
                 }
+                Material::Bumped(b) => b.bump.is_constant() && b.material.is_constant(),
             }
     }
 
@@ -368,6 +387,7 @@ impl Material {
                 ..
             } => interface_roughness.is_constant() && conductor_roughness.is_constant(),
             Material::Mix(m) => m.materials.iter().all(Material::roughness_is_constant),
+            Material::Bumped(b) => b.material.roughness_is_constant(),
         }
     }
 
@@ -377,6 +397,7 @@ impl Material {
     pub fn is_specular_only(&self) -> bool {
         match self {
             Material::Mix(m) => m.materials.iter().all(Material::is_specular_only),
+            Material::Bumped(b) => b.material.is_specular_only(),
             _ => {
                 self.roughness_is_constant() && {
                     let f = self.bxdf(0).flags();

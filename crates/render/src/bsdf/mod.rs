@@ -32,7 +32,8 @@ pub use dielectric::{DielectricBxdf, ThinDielectricBxdf};
 pub use diffuse::{DiffuseBxdf, DiffuseTransmissionBxdf};
 pub use layered::{CoatedConductorBxdf, CoatedDiffuseBxdf, LayeredBxdf, LayeredExitWeight};
 pub use material::{
-    BsdfContext, ConductorSpec, Material, MaterialError, MixMaterial, Roughness, mix_choice,
+    BsdfContext, Bump, BumpedMaterial, ConductorSpec, Material, MaterialError, MixMaterial,
+    Roughness, mix_choice,
 };
 pub use microfacet::TrowbridgeReitz;
 pub use world::Bsdf;

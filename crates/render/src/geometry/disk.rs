@@ -1,6 +1,6 @@
 //! Disks and annuli in the object-space plane `z = height`, facing `+z`.
 
-use super::{PrimHit, ShapeSample, SurfaceHit};
+use super::{PrimHit, ShadingGeometry, ShapeSample, SurfaceHit};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_disk_concentric;
 use crate::math::{Bounds3, Frame, Point2, Ray, Transform, Vec3};
@@ -118,6 +118,26 @@ impl Disk {
             ns: self.normal,
             dpdu,
         }
+    }
+
+    /// The shading geometry of `hit`, a hit on this disk (see
+    /// [`super::differentials`]).
+    pub fn shading_geometry(&self, hit: &SurfaceHit) -> ShadingGeometry {
+        let p = self.world_to_object.point(hit.p);
+        let r = (p.x * p.x + p.y * p.y).sqrt();
+        let dpdv = if r > 0.0 {
+            let s = (self.inner_radius - self.radius) / r;
+            self.object_to_world
+                .vector(Vec3::new(p.x * s, p.y * s, 0.0))
+        } else {
+            Vec3::ZERO
+        };
+        let dpdv = if dpdv.length_squared() > 0.0 {
+            dpdv
+        } else {
+            self.normal.cross(hit.dpdu.normalize())
+        };
+        ShadingGeometry::flat(hit.ns, hit.dpdu, dpdv)
     }
 
     /// Samples a point uniformly by area (also on an annulus); `pdf = 1 / area`.

@@ -6,14 +6,18 @@
 //! and barycentrics), and only the closest hit is expanded into a
 //! [`SurfaceHit`] with points, normals and texture coordinates.
 
+pub mod alpha;
 pub mod bilinear;
+pub mod differentials;
 pub mod disk;
 pub mod loop_subdiv;
 pub mod shape_set;
 pub mod sphere;
 pub mod triangle;
 
+pub use alpha::ShapeId;
 pub use bilinear::bilinear_to_triangles;
+pub use differentials::ShadingGeometry;
 pub use disk::Disk;
 pub use loop_subdiv::loop_subdivide;
 pub use shape_set::{Prim, ShapeSet};

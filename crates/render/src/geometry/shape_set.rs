@@ -1,8 +1,11 @@
 //! A set of shapes addressed by primitive ([`Prim`]): the unit the BVH
 //! stores, intersects and (for area lights) samples.
 
+use super::alpha::ShapeId;
 use super::{Disk, PrimHit, ShapeSample, Sphere, SurfaceHit, TriangleMesh};
 use crate::math::{Bounds3, Point2, Ray};
+use crate::texture::FloatTexture;
+use std::collections::BTreeMap;
 
 /// One intersectable primitive: a triangle of a mesh, a sphere or a disk.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -21,7 +24,7 @@ pub enum Prim {
 }
 
 /// The scene's shapes, in world space.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Default)]
 pub struct ShapeSet {
     /// Triangle meshes.
     pub meshes: Vec<TriangleMesh>,
@@ -29,6 +32,24 @@ pub struct ShapeSet {
     pub spheres: Vec<Sphere>,
     /// Disks.
     pub disks: Vec<Disk>,
+    /// Alpha cut-outs of the shapes that have one (see [`super::alpha`]).
+    pub(super) alpha: BTreeMap<ShapeId, FloatTexture>,
+}
+
+/// The derived form, with the alpha cut-outs only when there are some (so
+/// that the text of a scene without any, a content hash's input, is what
+/// it was before cut-outs existed).
+impl std::fmt::Debug for ShapeSet {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("ShapeSet");
+        d.field("meshes", &self.meshes)
+            .field("spheres", &self.spheres)
+            .field("disks", &self.disks);
+        if !self.alpha.is_empty() {
+            d.field("alpha", &self.alpha);
+        }
+        d.finish()
+    }
 }
 
 impl ShapeSet {

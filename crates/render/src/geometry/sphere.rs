@@ -2,11 +2,15 @@
 //! sampled uniformly by area, or (seen from outside) uniformly over the cone
 //! of directions the sphere subtends, as pbrt-v4's `Sphere::Sample(ctx, u)`.
 
-use super::{PrimHit, ShapeSample, SurfaceHit};
+use super::{PrimHit, ShadingGeometry, ShapeSample, SurfaceHit};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_sphere;
 use crate::math::{Bounds3, Frame, Point2, Point3, Ray, Transform, Vec3};
 use std::f32::consts::PI;
+
+fn sqr(x: f32) -> f32 {
+    x * x
+}
 
 /// A full sphere of `radius` about the object-space origin.
 ///
@@ -157,6 +161,34 @@ impl Sphere {
             ng,
             ns: ng,
             dpdu: dpdu_w,
+        }
+    }
+
+    /// The shading geometry of `hit`, a hit on this sphere (see
+    /// [`super::differentials`]).
+    pub fn shading_geometry(&self, hit: &SurfaceHit) -> ShadingGeometry {
+        let p = self.world_to_object.point(hit.p);
+        let z_radius = (p.x * p.x + p.y * p.y).sqrt();
+        let (cos_phi, sin_phi) = if z_radius > 0.0 {
+            (p.x / z_radius, p.y / z_radius)
+        } else {
+            (1.0, 0.0)
+        };
+        let sin_theta = (1.0 - sqr(p.z / self.radius)).max(0.0).sqrt();
+        // v = 1 - theta / π, so ∂θ/∂v = -π.
+        let dpdv = Vec3::new(p.z * cos_phi, p.z * sin_phi, -self.radius * sin_theta) * -PI;
+        let dpdu = self.param(p).1;
+        let dpdv_w = self.object_to_world.vector(dpdv);
+        ShadingGeometry {
+            n: hit.ns,
+            dpdu: hit.dpdu,
+            dpdv: if dpdv_w.length_squared() > 0.0 {
+                dpdv_w
+            } else {
+                hit.ns.cross(hit.dpdu.normalize())
+            },
+            dndu: self.object_to_world.normal(dpdu / self.radius),
+            dndv: self.object_to_world.normal(dpdv / self.radius),
         }
     }
 

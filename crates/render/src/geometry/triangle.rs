@@ -6,7 +6,7 @@ mod packet;
 
 pub use packet::{Hits8, PACKET_LANES, RayLanes, Tri8};
 
-use super::{PrimHit, ShapeSample, SurfaceHit};
+use super::{PrimHit, ShadingGeometry, ShapeSample, SurfaceHit};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_triangle;
 use crate::math::{Bounds3, Frame, Normal3, Point2, Point3, Ray, Transform, Vec3};
@@ -237,6 +237,34 @@ impl TriangleMesh {
         }
     }
 
+    /// The shading geometry of `hit`, a hit on triangle `i` (see
+    /// [`super::differentials`]).
+    pub fn shading_geometry(&self, i: usize, hit: &SurfaceHit) -> ShadingGeometry {
+        let p = self.vertices(i);
+        let uv = self.uv_of(i);
+        let dpdv = bitangent(uv, p, hit.ng, hit.dpdu);
+        let Some(normals) = &self.normals else {
+            return ShadingGeometry::flat(hit.ns, hit.dpdu, dpdv);
+        };
+        let n = hit.ns;
+        let t = n.cross(hit.dpdu);
+        let (s, t) = if t.length_squared() > 0.0 {
+            (t.cross(n), t)
+        } else {
+            let f = Frame::from_z(n);
+            (f.x, f.y)
+        };
+        let [n0, n1, n2] = self.indices[i].map(|k| normals[k as usize]);
+        let (dndu, dndv) = normal_derivatives(uv, [n0, n1, n2]);
+        ShadingGeometry {
+            n,
+            dpdu: s,
+            dpdv: t,
+            dndu,
+            dndv,
+        }
+    }
+
     /// Samples a point uniformly by area on triangle `i`; `pdf` is `1 / area`.
     pub fn sample(&self, i: usize, u: Point2) -> Option<ShapeSample> {
         let area = self.area(i);
@@ -294,6 +322,48 @@ fn tangent(uv: [Point2; 3], [p0, p1, p2]: [Point3; 3], ng: Normal3) -> Vec3 {
     } else {
         dpdu
     }
+}
+
+/// `∂p/∂v` from the uv parameterisation `uv` of the vertices `p`, given
+/// `∂p/∂u` as [`tangent`] returned it; when the parameterisation is
+/// degenerate, the second tangent of the frame about `ng` whose first is
+/// that `∂p/∂u`.
+fn bitangent(uv: [Point2; 3], [p0, p1, p2]: [Point3; 3], ng: Normal3, dpdu: Vec3) -> Vec3 {
+    let (du02, du12) = (uv[0] - uv[2], uv[1] - uv[2]);
+    let (dp02, dp12) = (p0 - p2, p1 - p2);
+    let det = du02.x * du12.y - du02.y * du12.x;
+    let dpdv = if det.abs() > 1e-9 {
+        (dp12 * du02.x - dp02 * du12.x) / det
+    } else {
+        Vec3::ZERO
+    };
+    if !(dpdu.cross(dpdv).length_squared() > 0.0) || !dpdv.is_finite() {
+        ng.cross(dpdu.normalize())
+    } else {
+        dpdv
+    }
+}
+
+/// `∂n/∂u` and `∂n/∂v` of the vertex normals `n` over the uv
+/// parameterisation `uv`; for a degenerate parameterisation, two tangents
+/// of `(n2 - n0) × (n1 - n0)` (zero when that is zero), as pbrt-v4 does.
+fn normal_derivatives(uv: [Point2; 3], [n0, n1, n2]: [Normal3; 3]) -> (Vec3, Vec3) {
+    let (du02, du12) = (uv[0] - uv[2], uv[1] - uv[2]);
+    let (dn1, dn2) = (n0 - n2, n1 - n2);
+    let det = du02.x * du12.y - du02.y * du12.x;
+    if det.abs() >= 1e-32 {
+        let inv = 1.0 / det;
+        return (
+            (dn1 * du12.y - dn2 * du02.y) * inv,
+            (dn2 * du02.x - dn1 * du12.x) * inv,
+        );
+    }
+    let dn = (n2 - n0).cross(n1 - n0);
+    if dn.length_squared() == 0.0 {
+        return (Vec3::ZERO, Vec3::ZERO);
+    }
+    let f = Frame::from_z(dn.normalize());
+    (f.x, f.y)
 }
 
 /// Möller-Trumbore ray-triangle test (two-sided). Returns the hit with

@@ -89,7 +89,7 @@ impl PathIntegrator {
                 break;
             };
             let (material, light) = scene.material_and_light(hit.prim);
-            let surf = &hit.surface;
+            let mut surf = hit.surface;
             let wo = -ray.d;
             if let Some(li) = light {
                 let light = &lights[li as usize];
@@ -111,7 +111,7 @@ impl PathIntegrator {
             depth += 1;
             let u = VertexSamples::draw(sampler);
             let material = &scene.materials()[material as usize];
-            let bsdf_ctx = BsdfContext {
+            let mut bsdf_ctx = BsdfContext {
                 ns: surf.ns,
                 dpdus: surf.dpdu,
                 seed: bsdf_seed,
@@ -119,8 +119,16 @@ impl PathIntegrator {
                 uv: surf.uv,
                 wo,
             };
+            let mut shading = hit.shading;
+            if let Some(bump) = material.bump(&bsdf_ctx) {
+                let g = scene.shapes().shading_geometry(hit.prim, &surf);
+                let g = bump.apply(&bsdf_ctx.texture_context(), surf.ng, &g);
+                (surf.ns, surf.dpdu) = (g.n, g.dpdu);
+                (bsdf_ctx.ns, bsdf_ctx.dpdus) = (g.n, g.dpdu);
+                shading = None;
+            }
             // The frame first, so that the BSDF is built in one place.
-            let frame = match hit.shading {
+            let frame = match shading {
                 Some(frame) => frame,
                 None => Frame::shading(surf.ns, surf.dpdu),
             };

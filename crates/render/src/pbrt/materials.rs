@@ -8,10 +8,10 @@ mod textures;
 use super::loader::PbrtLoader;
 use super::state::MatRef;
 use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};
-use crate::bsdf::{ConductorSpec, Material, MixMaterial, Roughness};
+use crate::bsdf::{Bump, BumpedMaterial, ConductorSpec, Material, MixMaterial, Roughness};
 use crate::spectrum::named::{NamedSpectrum, intern_measured, named_metal, planck};
 use crate::spectrum::{Rgb, spectrum_file_to_rgb, spectrum_samples_to_rgb};
-use crate::texture::{FloatTexture, SpectrumTexture, TextureEvalContext};
+use crate::texture::{ColorEncoding, FloatTexture, SpectrumTexture, TexImage, TextureEvalContext};
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, SpectrumOrTexture, SpectrumValue};
 use std::path::Path;
 use std::sync::Arc;
@@ -285,6 +285,49 @@ impl PbrtLoader {
         Ok(Some(material))
     }
 
+    /// `m` with the bump map (`"displacement"`) or normal map
+    /// (`"normalmap"`) the material's parameters give, if any. As in
+    /// pbrt-v4, a normal map wins over a displacement.
+    fn with_bump(&mut self, m: Material, ps: &ParamSet, loc: &Loc) -> Result<Material, ParseError> {
+        let displacement = match ps.find("displacement") {
+            Some(_) => Some(self.float_tex(ps, "displacement", 0.0.into(), loc)?),
+            None => None,
+        };
+        let bump = match ps.get_string("normalmap") {
+            Some(file) if !file.is_empty() => Bump::NormalMap(self.normal_map(file, ps, loc)?),
+            _ => match displacement {
+                Some(d) => Bump::Displacement(d),
+                None => return Ok(m),
+            },
+        };
+        let material = m;
+        Ok(Material::Bumped(Arc::new(BumpedMaterial {
+            material,
+            bump,
+        })))
+    }
+
+    /// The image of a `"normalmap"` parameter, read as pbrt-v4 reads it
+    /// (linear, unless the file is 8-bit and not a PNG: sRGB, see
+    /// [`ColorEncoding::for_file`]).
+    fn normal_map(
+        &mut self,
+        file: &str,
+        ps: &ParamSet,
+        loc: &Loc,
+    ) -> Result<Arc<TexImage>, ParseError> {
+        let path = self.resolve(file);
+        let at = ps.find("normalmap").map_or(loc, |p| &p.loc);
+        let error =
+            |why: String| ParseError::scene(at, format!("normalmap: {}: {why}", path.display()));
+        if let Err(e) = lowdisc_files::check_input(&path, u64::MAX) {
+            return Err(error(e.io_error().to_string()));
+        }
+        self.textures
+            .load_image(&path, Some(ColorEncoding::Linear))
+            .map_err(|e| error(e.to_string()))
+    }
+
     /// A material named in a `mix`: its value, or `None` for `interface`.
     fn mix_part(&self, name: &str, loc: &Loc) -> Result<(MatRef, Option<Material>), ParseError> {
         let r = *self.named_materials.get(name).ok_or_else(|| {
@@ -373,17 +416,7 @@ impl PbrtLoader {
                 Material::diffuse(Rgb::splat(0.5))
             }
         };
-        for (p, what) in [
-            ("displacement", "bump mapping"),
-            ("normalmap", "normal mapping"),
-        ] {
-            if let Some(param) = ps.find(p) {
-                ps.mark_used(p);
-                let what = format!("{what} (material parameter \"{p}\")");
-                let at = param.loc.clone();
-                self.approximated(&at, &what, "the surface is smooth")?;
-            }
-        }
+        let m = self.with_bump(m, ps, loc)?;
         ps.finish(&context, &mut self.warnings)?;
         self.counts.materials += 1;
         Ok(self.add_material(m))

@@ -12,6 +12,7 @@ use crate::light::diffuse_power_scale;
 use crate::math::{Normal3, Point2, Point3, Transform, Vec3};
 use crate::scene::Emission;
 use crate::spectrum::Rgb;
+use crate::texture::FloatTexture;
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, TargetResult};
 
 /// A built shape before it goes to the scene builder.
@@ -173,38 +174,53 @@ impl PbrtLoader {
         }
     }
 
-    /// Shape parameters lowdisc lacks: alpha cut-outs (a texture or a
-    /// constant below 1), image area lights (`emissionfilename`) and
-    /// displacement (`loopsubdiv`).
+    /// The shape's alpha cut-out (`"alpha"`: a float texture, or a
+    /// constant below 1; `None` when opaque). On an area light it is not
+    /// supported: light sampling would ignore it.
+    fn shape_alpha(
+        &mut self,
+        def: &ShapeDef,
+        emissive: bool,
+    ) -> Result<Option<FloatTexture>, ParseError> {
+        let ps = &def.params;
+        let alpha = match ps.get_float_or_texture("alpha") {
+            None => return Ok(None),
+            Some(FloatOrTexture::Value(v)) if v >= 1.0 => return Ok(None),
+            Some(_) => self.float_tex(ps, "alpha", 1.0.into(), &def.loc)?,
+        };
+        if emissive {
+            let what = format!(
+                "alpha cut-out on an area light ({} parameter \"alpha\")",
+                def.ty
+            );
+            let at = ps.find("alpha").map_or(&def.loc, |p| &p.loc).clone();
+            self.approximated(&at, &what, "the light emits from the whole shape")?;
+        }
+        Ok(Some(alpha))
+    }
+
+    /// Shape parameters lowdisc lacks: image area lights
+    /// (`emissionfilename`) and displacement (`loopsubdiv`).
     fn unsupported_shape_params(&mut self, def: &ShapeDef) -> Result<(), ParseError> {
         let ps = &def.params;
-        let opaque = matches!(
-            ps.get_float_or_texture("alpha"),
-            None | Some(FloatOrTexture::Value(1.0))
-        );
         let missing = [
-            ("alpha", !opaque, "alpha cut-out", "the shape is opaque"),
             (
                 "emissionfilename",
-                true,
                 "image area light",
                 "the light's \"L\" is used",
             ),
             (
                 "displacement",
-                true,
                 "displacement",
                 "the surface is not displaced",
             ),
         ];
-        for (name, changes_image, feature, instead) in missing {
+        for (name, feature, instead) in missing {
             let Some(p) = ps.find(name) else { continue };
             ps.mark_used(name);
-            if changes_image {
-                let what = format!("{feature} ({} parameter \"{name}\")", def.ty);
-                let at = p.loc.clone();
-                self.approximated(&at, &what, instead)?;
-            }
+            let what = format!("{feature} ({} parameter \"{name}\")", def.ty);
+            let at = p.loc.clone();
+            self.approximated(&at, &what, instead)?;
         }
         Ok(())
     }
@@ -227,6 +243,7 @@ impl PbrtLoader {
             return Ok(());
         };
         self.unsupported_shape_params(def)?;
+        let alpha = self.shape_alpha(def, area.is_some())?;
         def.params
             .finish(&format!("Shape \"{}\"", def.ty), &mut self.warnings)?;
         let Some(material) = self.material_index(def.material) else {
@@ -256,6 +273,7 @@ impl PbrtLoader {
         }
         self.builder
             .set_emission_spectrum(area.and_then(|a| a.spectrum.clone()));
+        self.builder.set_shape_alpha(alpha);
         match built {
             Built::Mesh(m) => {
                 self.counts.triangles += m.len();
@@ -271,6 +289,7 @@ impl PbrtLoader {
             }
         }
         self.builder.set_emission_spectrum(None);
+        self.builder.set_shape_alpha(None);
         Ok(())
     }
 }

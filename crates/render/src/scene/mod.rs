@@ -17,11 +17,12 @@ use crate::accel::{Accel, Hit};
 use crate::bsdf::Material;
 use crate::bvh::BvhStats;
 use crate::error::RenderError;
-use crate::geometry::{Disk, Prim, ShapeSet, Sphere, TriangleMesh};
+use crate::geometry::{Disk, Prim, ShapeId, ShapeSet, Sphere, TriangleMesh};
 use crate::light::{DiffuseAreaLight, Light, LightSampler, LightType};
 use crate::math::{Bounds3, Ray};
 use crate::spectrum::Rgb;
 use crate::spectrum::named::EmissionSpectrum;
+use crate::texture::FloatTexture;
 
 /// Diffuse emission of a shape (pbrt's `AreaLightSource "diffuse"`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,6 +51,7 @@ pub struct SceneBuilder {
     materials: Vec<Material>,
     lights: Vec<(Light, Option<EmissionSpectrum>)>,
     emission_spectrum: Option<EmissionSpectrum>,
+    alpha: Option<FloatTexture>,
 }
 
 impl SceneBuilder {
@@ -64,19 +66,22 @@ impl SceneBuilder {
     }
     /// Adds a triangle mesh with a material and optional emission.
     pub fn add_mesh(&mut self, mesh: TriangleMesh, material: u32, emission: Option<Emission>) {
-        self.shapes.add_mesh(mesh);
+        let i = self.shapes.add_mesh(mesh);
+        self.apply_alpha(ShapeId::Mesh(i));
         let s = self.emission_spectrum.clone();
         self.mesh_info.push((material, emission, s));
     }
     /// Adds a sphere with a material and optional emission.
     pub fn add_sphere(&mut self, s: Sphere, material: u32, emission: Option<Emission>) {
-        self.shapes.add_sphere(s);
+        let p = self.shapes.add_sphere(s);
+        self.apply_alpha(p.shape());
         let s = self.emission_spectrum.clone();
         self.sphere_info.push((material, emission, s));
     }
     /// Adds a disk with a material and optional emission.
     pub fn add_disk(&mut self, d: Disk, material: u32, emission: Option<Emission>) {
-        self.shapes.add_disk(d);
+        let p = self.shapes.add_disk(d);
+        self.apply_alpha(p.shape());
         let s = self.emission_spectrum.clone();
         self.disk_info.push((material, emission, s));
     }
@@ -89,6 +94,18 @@ impl SceneBuilder {
     /// (blackbody, sampled, file), `None` (the default) to uplift its RGB.
     pub fn set_emission_spectrum(&mut self, s: Option<EmissionSpectrum>) {
         self.emission_spectrum = s;
+    }
+
+    /// The alpha cut-out (pbrt-v4's shape `"alpha"`, see
+    /// [`crate::geometry::alpha`]) of the shapes added after this call;
+    /// `None` (the default) for opaque shapes.
+    pub fn set_shape_alpha(&mut self, alpha: Option<FloatTexture>) {
+        self.alpha = alpha;
+    }
+    fn apply_alpha(&mut self, shape: ShapeId) {
+        if let Some(a) = &self.alpha {
+            self.shapes.set_alpha(shape, a.clone());
+        }
     }
 
     /// Validates indices and emission, builds the BVH, the area lights and
