@@ -53,7 +53,6 @@ fn render_with_threads(l: &LoadedScene, threads: usize) -> Vec<[f32; 3]> {
     let view = View::native(&l.view).unwrap();
     let opts = RenderOptions {
         threads: Some(threads),
-        tile_size: 8,
         ..RenderOptions::new(SamplerName::ZSobol, 5, 4)
     };
     render(&l.scene, &view, &opts, &NoProgress)

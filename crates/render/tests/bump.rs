@@ -157,7 +157,6 @@ fn render_pixels(l: &LoadedScene) -> Vec<[f32; 3]> {
     let view = View::native(&l.view).unwrap();
     let opts = RenderOptions {
         threads: Some(2),
-        tile_size: 8,
         ..RenderOptions::new(SamplerName::ZSobol, 3, 4)
     };
     render(&l.scene, &view, &opts, &NoProgress)
