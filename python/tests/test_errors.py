@@ -85,9 +85,9 @@ def test_the_extension_checks_arrays_itself():
     with pytest.raises(ValueError, match="outside"):
         _lowdisc.star_discrepancy(np.full((2, 2), -1.0), 1e9)
     with pytest.raises(TypeError, match="dtype uint32"):
-        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 2), dtype=np.int64), 2, 0, 16)
+        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 2), dtype=np.int64), 2, 0)
     with pytest.raises(ValueError, match=r"shape \(p, 2\)"):
-        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 3), dtype=np.uint32), 2, 0, 16)
+        _lowdisc.pixel_samples("sobol", 4, (2, 2), np.zeros((1, 3), dtype=np.uint32), 2, 0)
     out = np.empty((1, 2))
     with pytest.raises(OverflowError):
         _lowdisc.points_into(out, "sobol", -1, "gray", "none", 0, 32)
