@@ -9,11 +9,12 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use lowdisc_image::RgbImage;
 
-use crate::assemble::{Cursor, Measures, UnitSource, join_cut};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::cut::samples;
 use crate::plan::{Plan, Target, Work, reference_cut, reference_settings};
-use crate::progress::{Progress, Stage, samples};
+use crate::progress::{Progress, Stage};
 use crate::results::ReferenceInfo;
+use crate::source::{Cursor, Measures, UnitSource, join_cut};
 use crate::stats::{FNV_OFFSET, fnv1a};
 
 /// Whether the main and the convergence reference are in the cache (and
