@@ -12,12 +12,13 @@
 //! [`run`].
 //!
 //! Modules, one per subcommand and a few shared ones:
-//! - `points`, `figure`, `discrepancy` (with `metric_rows`, `pointfile`),
-//!   `spectrum`, `claim` (with `claim_report`), `render_cmd` (with
+//! - `points`, `figure`, `discrepancy` (its `rows`; with `pointfile`),
+//!   `spectrum`, `claim` (its `measure` and `report`), `render_cmd` (with
 //!   `render_stats`), `split_cmd` (`merge`, and the parts `render` writes),
-//!   `experiment` (with `experiment_units`: plan, unit, merge, status),
-//!   `study`: the subcommands; the experiment and the study themselves are
-//!   the library `lowdisc-experiment`;
+//!   `experiment` (its `one_machine` run and its `units`: plan, unit, merge,
+//!   status), `study`: the subcommands; the experiment and the study
+//!   themselves are the library `lowdisc-experiment`; a folder's files
+//!   import one way only;
 //! - `parse`: parsers of structured values (`--pixel`, `--res`, ranges, names);
 //! - `sampler_help`: the sampler lists of `--help`, from the catalog's table;
 //! - `limits`: the default work and memory limits and their checks;
@@ -27,15 +28,12 @@
 //! - `interrupt`: the SIGINT/SIGTERM handler that removes live temporaries.
 
 mod claim;
-mod claim_report;
 mod default_output;
 mod discrepancy;
 mod experiment;
-mod experiment_units;
 mod figure;
 mod interrupt;
 mod limits;
-mod metric_rows;
 mod output;
 mod parse;
 mod plots;

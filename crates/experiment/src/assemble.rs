@@ -3,98 +3,29 @@
 //! renders each unit in-process as it is needed) and of `lowdisc experiment
 //! merge` (which reads each unit's file). Both hand the renders to
 //! [`assemble`] through a [`UnitSource`], in the order of the plan, and end
-//! in [`report`]; the pieces of a cut render are joined by [`join_cut`].
+//! in [`report`] with an [`Outcome`]; the pieces of a cut render are joined
+//! by [`join_cut`].
 
-use anyhow::{Context, Result, bail};
+use std::path::PathBuf;
+
+use anyhow::{Context, Result};
 use lowdisc::catalog::SamplerName;
 use lowdisc_image::RgbImage;
-use lowdisc_render::view::{View, ViewSpec};
-use lowdisc_split::RenderPart;
 
 use crate::comparison::fill_statistics;
-use crate::cut::{Cut, Joiner, Piece};
+use crate::config::ExperimentConfig;
+use crate::cut::samples;
 use crate::metrics::{ErrorStats, MetricSummary, measure};
-use crate::plan::{Plan, Target, Unit, Work, convergence_cut, shares_reference};
-use crate::progress::{Progress, Stage, samples};
-use crate::quality::Evaluator;
+use crate::plan::{Plan, Target, Work, convergence_cut, shares_reference};
+use crate::progress::{Progress, Stage};
 use crate::reference::reference;
+use crate::report::answer::Answer;
 use crate::results::{
     ConvPoint, Images, Results, RunResult, SamplerResult, SweepPoint, fill_ratios,
 };
-use crate::run::{Outcome, Subject};
+use crate::source::{Cursor, Measures, UnitSource, join_cut};
 use crate::stats::{MeanSd, log_log_slope};
 use crate::sweep::{THRESHOLDS, pixel_discrepancy};
-
-/// What a unit's render leaves: an image, or (a piece of a cut render,
-/// [`Work::keeps_sums`]) its pixels' exact sums.
-#[derive(Debug, Clone)]
-pub enum Rendered {
-    /// The image of a whole render.
-    Image(RgbImage),
-    /// The sums of a piece, to be merged with the other pieces.
-    Sums(RenderPart),
-}
-
-/// The render of one unit.
-#[derive(Debug, Clone)]
-pub struct UnitOutput {
-    /// What it left.
-    pub rendered: Rendered,
-    /// The render's time in seconds (what `results.json` reports).
-    pub render_time_s: f64,
-}
-
-impl UnitOutput {
-    /// The image of a whole render.
-    fn into_image(self, unit: &Unit) -> Result<RgbImage> {
-        match self.rendered {
-            Rendered::Image(image) => Ok(image),
-            Rendered::Sums(_) => bail!("unit {} left sums, not an image", unit.index),
-        }
-    }
-
-    /// The sums of a piece.
-    fn into_sums(self, unit: &Unit) -> Result<RenderPart> {
-        match self.rendered {
-            Rendered::Sums(part) => Ok(part),
-            Rendered::Image(_) => bail!("unit {} left an image, not sums", unit.index),
-        }
-    }
-}
-
-/// Where [`assemble`] gets each unit's render from. `output` reports the
-/// render's samples to `stage` (by [`Stage::finished_render`]).
-pub trait UnitSource {
-    /// The render of `unit`.
-    fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput>;
-}
-
-/// What renders are measured with: the scene's metrics at the plan's
-/// resolution and its view (whose film turns merged sums into images).
-pub struct Measures {
-    /// The masked, blurred and FLIP metrics.
-    pub evaluator: Evaluator,
-    /// The scene's view.
-    pub view: ViewSpec,
-}
-
-impl Measures {
-    /// The measures of the experiment `plan` on `subject`, at the plan's
-    /// resolution.
-    pub fn new(plan: &Plan, subject: &Subject) -> Result<Measures> {
-        let c = &plan.config;
-        let view = subject.view_at(c.resolution)?;
-        Ok(Measures {
-            evaluator: Evaluator::new(&subject.scene, &view, c.emitter_border, c.blur_sigma)?,
-            view: subject.view.clone(),
-        })
-    }
-
-    /// The view at `resolution`.
-    pub(crate) fn view_at(&self, resolution: [u32; 2]) -> Result<View> {
-        Ok(View::new(&self.view, resolution)?)
-    }
-}
 
 /// Assembles the units of `plan` from `source` ([`assemble`]) and writes
 /// the report folder; `wall_time_s` gives the run's wall time when the
@@ -113,57 +44,42 @@ pub fn report(
     Ok(Outcome::of(&plan.config, files, &results, wall, observer))
 }
 
-/// The plan's units in order; each step of the assembly takes the next one
-/// and checks that it is the render it expects.
-pub(crate) struct Cursor<'a> {
-    units: std::slice::Iter<'a, Unit>,
+/// What a finished run leaves behind.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// Every file written to the report folder, then the reference files.
+    pub files: Vec<PathBuf>,
+    /// Wall time of the whole run, seconds.
+    pub seconds: f64,
+    /// The answer to the paper's question in one line
+    /// ([`crate::report::answer::Answer::line`]).
+    pub answer: String,
 }
 
-impl<'a> Cursor<'a> {
-    /// A cursor at the first of `units`.
-    pub(crate) fn new(units: &'a [Unit]) -> Cursor<'a> {
-        Cursor {
-            units: units.iter(),
+impl Outcome {
+    /// The report's `files` and the reference files of `results`, after
+    /// telling `observer` where the report is.
+    pub(crate) fn of(
+        config: &ExperimentConfig,
+        mut files: Vec<PathBuf>,
+        results: &Results,
+        seconds: f64,
+        observer: &dyn Progress,
+    ) -> Outcome {
+        files.push(results.reference.file.clone());
+        if !shares_reference(config) {
+            files.push(results.convergence_reference.file.clone());
+        }
+        observer.note(&format!(
+            "report written to {}",
+            config.out.join("report.md").display()
+        ));
+        Outcome {
+            files,
+            seconds,
+            answer: Answer::of(config, results).line(),
         }
     }
-
-    /// The unit of `work`, the next in the plan.
-    pub(crate) fn next(&mut self, work: Work) -> Result<&'a Unit> {
-        match self.units.next() {
-            Some(u) if u.work == work => Ok(u),
-            Some(u) => bail!(
-                "unit {} is `{}`, expected `{}`",
-                u.index,
-                u.work.describe(),
-                work.describe()
-            ),
-            None => bail!("the plan has no unit `{}`", work.describe()),
-        }
-    }
-}
-
-/// The image of a render cut into `cut`, whose pieces are the next units
-/// of `cursor` (the unit of each piece is `work(piece)`), as the film of
-/// `view` (spectral or not), and the sum of the pieces' render times.
-pub(crate) fn join_cut(
-    cursor: &mut Cursor,
-    source: &mut dyn UnitSource,
-    stage: &Stage,
-    cut: Cut,
-    work: &dyn Fn(Piece) -> Work,
-    view: &View,
-    spectral: bool,
-) -> Result<(RgbImage, f64)> {
-    let mut joiner = Joiner::new();
-    let mut time_s = 0.0;
-    for piece in cut.pieces() {
-        let unit = cursor.next(work(piece))?;
-        let out = source.output(unit, stage)?;
-        time_s += out.render_time_s;
-        let name = format!("unit {} ({})", unit.index, unit.work.describe());
-        joiner.push(piece, name, out.into_sums(unit)?)?;
-    }
-    Ok((joiner.finish(view, spectral)?, time_s))
 }
 
 /// The numbers and images of the experiment of `plan`, from the renders
@@ -176,7 +92,7 @@ pub fn assemble(
     observer: &dyn Progress,
 ) -> Result<(Results, Images)> {
     let config = &plan.config;
-    let mut cursor = Cursor::new(&plan.units);
+    let mut cursor = Cursor::new(plan);
     let evaluator = &measures.evaluator;
     let (main, ref_info) = reference(plan, measures, Target::Main, &mut cursor, source, observer)?;
     let mut samplers = Vec::new();
@@ -279,9 +195,7 @@ pub fn assemble(
         s.convergence_slope = log_log_slope(&pts);
         s.convergence = series;
     }
-    if let Some(u) = cursor.units.next() {
-        bail!("unit {} (`{}`) is not used", u.index, u.work.describe());
-    }
+    cursor.finish()?;
     let results = Results {
         samplers,
         reference: ref_info,

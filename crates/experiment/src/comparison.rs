@@ -9,9 +9,7 @@
 //! image for every seed, so its own interval has zero width and a ratio to
 //! it carries only the other sampler's scatter.
 
-use serde::Serialize;
-
-use crate::results::{RunResult, SamplerResult};
+use crate::results::{MetricStats, RunResult, SamplerResult};
 use crate::stats::{PairedRatio, Summary, paired_ratio};
 
 /// The baseline of the ratios: pbrt-v3's global Sobol, the paper's baseline.
@@ -29,18 +27,6 @@ pub const METRICS: [(&str, MetricOf); 6] = [
     ("mse", |r| r.linear.mse),
     ("relmse", |r| r.linear.relmse),
 ];
-
-/// One metric of one sampler: its summary and its ratio to the baseline.
-#[derive(Debug, Clone, Serialize)]
-pub struct MetricStats {
-    /// The metric's name (see [`METRICS`]).
-    pub metric: &'static str,
-    /// Mean, sd, standard error and 95 % interval over the runs.
-    pub summary: Summary,
-    /// The paired ratio to [`BASELINE`] (none for the baseline itself, when
-    /// it is absent, or with fewer than two runs).
-    pub ratio_to_baseline: Option<PairedRatio>,
-}
 
 fn column(s: &SamplerResult, f: MetricOf) -> Vec<f64> {
     s.runs.iter().map(f).collect()

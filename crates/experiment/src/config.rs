@@ -82,7 +82,7 @@ impl ExperimentConfig {
     /// samples (a run is never cut) and [`DEFAULT_UNIT_SAMPLES`].
     pub fn unit_budget(&self) -> u64 {
         self.unit_samples.unwrap_or_else(|| {
-            crate::progress::samples(self.resolution, self.spp).max(DEFAULT_UNIT_SAMPLES)
+            crate::cut::samples(self.resolution, self.spp).max(DEFAULT_UNIT_SAMPLES)
         })
     }
 

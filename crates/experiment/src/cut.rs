@@ -24,11 +24,14 @@ use lowdisc_render::render::{SampleRange, image_of_sums};
 use lowdisc_render::view::View;
 use lowdisc_split::{NamedPart, RenderPart, merge};
 
-use crate::progress::samples;
-
 /// The rows of a render's tiles ([`lowdisc_tiles::TILE_SIZE`]): a band is
 /// whole rows of tiles.
 pub const BAND_ROWS: u32 = lowdisc_tiles::TILE_SIZE;
+
+/// The camera samples of one render at `resolution` with `spp` samples.
+pub fn samples(resolution: [u32; 2], spp: u32) -> u64 {
+    u64::from(resolution[0]) * u64::from(resolution[1]) * u64::from(spp)
+}
 
 /// How a render is cut: `bands` x `ranges` pieces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -216,6 +219,11 @@ impl Default for Joiner {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_render_has_pixels_times_spp_samples() {
+        assert_eq!(samples([4, 3], 2), 24);
+    }
 
     #[test]
     fn bands_cover_every_row_once_in_whole_tile_rows() {

@@ -1,4 +1,5 @@
-//! The estimate of a one-machine run's time ([`Estimate`]): the camera
+//! The estimate of a one-machine run's time ([`Estimate`], the observer's
+//! [`crate::progress`] vocabulary): the camera
 //! samples of its plan's units ([`crate::plan::Plan::samples`]) at the
 //! speed of a short calibration render, which measures this machine's
 //! samples per second on the scene.
@@ -12,18 +13,8 @@ use anyhow::Result;
 use lowdisc_render::render::{NoProgress, render};
 
 use crate::config::{ExperimentConfig, REF_SAMPLER};
-use crate::run::{Subject, options};
-
-/// The estimated work and time of a run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Estimate {
-    /// Camera samples still to render (cached references excluded).
-    pub samples: u64,
-    /// Samples per second measured by the calibration render.
-    pub samples_per_second: f64,
-    /// `samples / samples_per_second`.
-    pub seconds: f64,
-}
+use crate::progress::Estimate;
+use crate::subject::{Subject, options};
 
 /// Samples per pixel of the calibration render. At 1 spp the start of the
 /// worker threads and the first touches of the scene weigh so much that the

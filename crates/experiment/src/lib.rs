@@ -9,6 +9,8 @@
 //! Modules, in the order a run uses them:
 //! - [`config`]: the validated settings of one experiment;
 //! - [`scene`]: the built-in scene and its procedural sky;
+//! - [`subject`]: the scene to render with its view, loaded and hashed, and
+//!   the render options of one render;
 //! - [`plan`]: the experiment as independent units (one render each) and
 //!   `plan.json`;
 //! - [`cut`]: a large render cut into pieces (bands x sample ranges) and
@@ -16,6 +18,8 @@
 //! - [`estimate`]: the estimate of a one-machine run's time;
 //! - [`reference`](mod@reference): the converged reference renders, cached on disk;
 //! - [`run`](mod@run): the one-machine run: every unit rendered in-process;
+//! - [`source`]: the units' renders as the assembly reads them, and the
+//!   pieces of a cut render joined;
 //! - [`units`]: rendering one unit, its files, its lock;
 //! - [`assemble`](mod@assemble): the units' renders measured and collected
 //!   into results and the report folder (one path for the one-machine and
@@ -106,14 +110,16 @@ pub mod report;
 pub mod results;
 pub mod run;
 pub mod scene;
+pub mod source;
 pub mod stats;
 pub mod status;
 pub mod study;
+pub mod subject;
 pub mod sweep;
 pub mod units;
 
+pub use assemble::Outcome;
 pub use assemble::assemble;
 pub use config::{DEFAULT_SAMPLERS, ExperimentConfig, REF_SAMPLER, REF_SEED};
-pub use estimate::Estimate;
-pub use progress::{Progress, Silent};
-pub use run::{Outcome, run};
+pub use progress::{Estimate, Progress, Silent};
+pub use run::run;

@@ -10,13 +10,14 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 
-use crate::assemble::{Measures, report};
+use crate::assemble::{Outcome, report};
 use crate::config::ExperimentConfig;
 use crate::plan::Plan;
 use crate::plan::file::PlanFile;
 use crate::progress::Progress;
 use crate::reference::cached_references;
-use crate::run::{Outcome, load};
+use crate::source::Measures;
+use crate::subject::load;
 use crate::units::store::Store;
 use crate::units::{FromFiles, planned_scene};
 

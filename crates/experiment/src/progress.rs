@@ -13,7 +13,16 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use lowdisc_render::render::{self, ProgressSink};
 
-use crate::estimate::Estimate;
+/// The estimated work and time of a run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Estimate {
+    /// Camera samples still to render (cached references excluded).
+    pub samples: u64,
+    /// Samples per second measured by the calibration render.
+    pub samples_per_second: f64,
+    /// `samples / samples_per_second`.
+    pub seconds: f64,
+}
 
 /// Receives a run's progress; every method does nothing by default.
 pub trait Progress: Sync {
@@ -81,11 +90,6 @@ impl ProgressSink for Stage<'_> {
     }
 }
 
-/// The camera samples of one render at `resolution` with `spp` samples.
-pub fn samples(resolution: [u32; 2], spp: u32) -> u64 {
-    u64::from(resolution[0]) * u64::from(resolution[1]) * u64::from(spp)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -124,6 +128,5 @@ mod tests {
         stage.end();
         let got = log.0.into_inner().unwrap();
         assert_eq!(got, ["begin s 20", "4", "10", "16", "20", "end"]);
-        assert_eq!(samples([4, 3], 2), 24);
     }
 }

@@ -9,14 +9,14 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use lowdisc_image::RgbImage;
 
-use crate::run::Subject;
-
-use crate::assemble::{Cursor, Measures, UnitSource, join_cut};
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
+use crate::cut::samples;
 use crate::plan::{Plan, Target, Unit, Work, reference_cut, reference_settings};
-use crate::progress::{Progress, Stage, samples};
+use crate::progress::{Progress, Stage};
 use crate::results::ReferenceInfo;
+use crate::source::{Cursor, Measures, UnitSource, join_cut};
 use crate::stats::{FNV_OFFSET, fnv1a};
+use crate::subject::Subject;
 
 /// Whether the main and the convergence reference are in the cache (and
 /// readable) for the scene whose content hashes to `scene_hash`.
@@ -62,7 +62,7 @@ pub fn main_reference(
         cached,
         units,
     };
-    let mut cursor = Cursor::new(&plan.units);
+    let mut cursor = Cursor::new(&plan);
     let mut source = crate::units::InProcess {
         config,
         subject,

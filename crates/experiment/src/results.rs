@@ -7,10 +7,21 @@ use std::path::PathBuf;
 use lowdisc_image::RgbImage;
 use serde::Serialize;
 
-use crate::comparison::MetricStats;
 use crate::metrics::{ErrorStats, MetricSummary};
 use crate::quality::Quality;
-use crate::stats::{MeanSd, ratio};
+use crate::stats::{MeanSd, PairedRatio, Summary, ratio};
+
+/// One metric of one sampler: its summary and its ratio to the baseline.
+#[derive(Debug, Clone, Serialize)]
+pub struct MetricStats {
+    /// The metric's name (see `comparison::METRICS`).
+    pub metric: &'static str,
+    /// Mean, sd, standard error and 95 % interval over the runs.
+    pub summary: Summary,
+    /// The paired ratio to the baseline sampler `sobol` (none for the baseline itself, when
+    /// it is absent, or with fewer than two runs).
+    pub ratio_to_baseline: Option<PairedRatio>,
+}
 
 /// One render's numbers.
 #[derive(Debug, Clone, Serialize)]
@@ -61,10 +72,10 @@ pub struct SamplerResult {
     pub relmse_ratio_to_sobol: Option<f64>,
     /// The 95 % interval of the paired relMSE ratio to `sobol` (the
     /// `relmse` entry of `statistics`, copied by
-    /// [`crate::comparison::fill_statistics`]; `[1, 1]` for `sobol` itself).
+    /// `comparison::fill_statistics`; `[1, 1]` for `sobol` itself).
     pub relmse_ratio_interval: Option<[f64; 2]>,
     /// Mean ± SE, 95 % interval and paired ratio to `sobol` of each compared
-    /// metric ([`crate::comparison`]).
+    /// metric (`comparison`).
     pub statistics: Vec<MetricStats>,
     /// Every run.
     pub runs: Vec<RunResult>,

@@ -1,8 +1,8 @@
 //! The threshold sweep of the paper's method: for each threshold, the star
 //! discrepancy of one pixel's film positions and the error of `paper-repro`
 //! renders against the reference (mean and sd over the runs' seeds). The
-//! renders are units of the plan ([`crate::plan`]); their errors are
-//! collected by [`crate::assemble()`].
+//! renders are units of the plan (`Work::Sweep`); their errors are
+//! collected when the units are assembled.
 //!
 //! Threshold 1 leaves every generator-matrix column unflipped, so its row
 //! is plain Sobol (a deterministic sampler: its runs are identical).

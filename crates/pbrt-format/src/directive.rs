@@ -1,5 +1,6 @@
-//! Directives as values: [`Directive`] (what the parser hands a
-//! [`ParserTarget`]) and the [`Recorder`] target that keeps every directive.
+//! Directives as values: their keywords ([`DIRECTIVES`], [`is_directive`]),
+//! [`Directive`] (what the parser hands a [`ParserTarget`]) and the
+//! [`Recorder`] target that keeps every directive.
 //!
 //! The [`Recorder`] is what the tests compare against, and what the
 //! [`crate::Formatter`] round trip (parse, print, parse again) is checked with.
@@ -8,6 +9,56 @@ use std::path::{Path, PathBuf};
 
 use crate::target::TargetResult;
 use crate::{ActiveTransform, FileKind, Loc, Param, ParamSet, ParserTarget};
+
+/// Every directive keyword the parser accepts.
+pub const DIRECTIVES: &[&str] = &[
+    "Accelerator",
+    "ActiveTransform",
+    "AreaLightSource",
+    "Attribute",
+    "AttributeBegin",
+    "AttributeEnd",
+    "Camera",
+    "ColorSpace",
+    "ConcatTransform",
+    "CoordinateSystem",
+    "CoordSysTransform",
+    "Film",
+    "Identity",
+    "Import",
+    "Include",
+    "Integrator",
+    "LightSource",
+    "LookAt",
+    "MakeNamedMaterial",
+    "MakeNamedMedium",
+    "Material",
+    "MediumInterface",
+    "NamedMaterial",
+    "ObjectBegin",
+    "ObjectEnd",
+    "ObjectInstance",
+    "Option",
+    "PixelFilter",
+    "ReverseOrientation",
+    "Rotate",
+    "Sampler",
+    "Scale",
+    "Shape",
+    "Texture",
+    "Transform",
+    "TransformBegin",
+    "TransformEnd",
+    "TransformTimes",
+    "Translate",
+    "WorldBegin",
+    "WorldEnd",
+];
+
+/// Whether `word` is a directive keyword.
+pub fn is_directive(word: &str) -> bool {
+    DIRECTIVES.contains(&word)
+}
 
 /// One directive with its typed arguments, as [`ParserTarget::directive`]
 /// receives it (the location comes separately).

@@ -47,11 +47,11 @@ mod target;
 pub mod token;
 mod warnings;
 
-pub use directive::{Directive, Recorder};
+pub use directive::{DIRECTIVES, Directive, Recorder, is_directive};
 pub use error::{ErrorKind, Loc, ParseError};
 pub use format::{Formatter, format_number, format_string};
 pub use param::{Param, ParamType, ParamValues};
 pub use paramset::{FloatOrTexture, ParamSet, SpectrumOrTexture, SpectrumValue};
-pub use parser::{DIRECTIVES, MAX_INCLUDE_DEPTH, is_directive, parse_file, parse_str};
+pub use parser::{MAX_INCLUDE_DEPTH, parse_file, parse_str};
 pub use target::{ActiveTransform, FileKind, ParserTarget, TargetResult};
 pub use warnings::{Warning, Warnings};

@@ -20,56 +20,6 @@ use crate::{
 /// [`ErrorKind::IncludeDepth`] (a file that includes itself, directly or not).
 pub const MAX_INCLUDE_DEPTH: usize = 32;
 
-/// Every directive keyword the parser accepts.
-pub const DIRECTIVES: &[&str] = &[
-    "Accelerator",
-    "ActiveTransform",
-    "AreaLightSource",
-    "Attribute",
-    "AttributeBegin",
-    "AttributeEnd",
-    "Camera",
-    "ColorSpace",
-    "ConcatTransform",
-    "CoordinateSystem",
-    "CoordSysTransform",
-    "Film",
-    "Identity",
-    "Import",
-    "Include",
-    "Integrator",
-    "LightSource",
-    "LookAt",
-    "MakeNamedMaterial",
-    "MakeNamedMedium",
-    "Material",
-    "MediumInterface",
-    "NamedMaterial",
-    "ObjectBegin",
-    "ObjectEnd",
-    "ObjectInstance",
-    "Option",
-    "PixelFilter",
-    "ReverseOrientation",
-    "Rotate",
-    "Sampler",
-    "Scale",
-    "Shape",
-    "Texture",
-    "Transform",
-    "TransformBegin",
-    "TransformEnd",
-    "TransformTimes",
-    "Translate",
-    "WorldBegin",
-    "WorldEnd",
-];
-
-/// Whether `word` is a directive keyword.
-pub fn is_directive(word: &str) -> bool {
-    DIRECTIVES.contains(&word)
-}
-
 /// Parses the scene file at `path` (and the files it includes) into `target`.
 ///
 /// The file is read whole; invalid UTF-8 is replaced (it can only matter inside

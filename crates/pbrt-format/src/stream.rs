@@ -4,7 +4,7 @@
 use std::borrow::Cow;
 use std::sync::Arc;
 
-use crate::parser::is_directive;
+use crate::directive::is_directive;
 use crate::token::{Token, TokenKind, Tokenizer, unescape};
 use crate::{ErrorKind, Loc, Param, ParamSet, ParamType, ParamValues, ParseError};
 

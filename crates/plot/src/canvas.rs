@@ -264,31 +264,4 @@ impl Canvas {
             style,
         });
     }
-
-    /// Renders the canvas as an SVG document.
-    pub fn to_svg(&self) -> String {
-        crate::svg::render(self)
-    }
-
-    /// Renders the canvas as PNG bytes.
-    pub fn to_png(&self) -> Result<Vec<u8>, Error> {
-        crate::raster::render(self)
-    }
-
-    /// Renders in `format`.
-    pub fn encode(&self, format: Format) -> Result<Vec<u8>, Error> {
-        match format {
-            Format::Png => self.to_png(),
-            Format::Svg => Ok(self.to_svg().into_bytes()),
-        }
-    }
-
-    /// Writes the canvas to `path`, as PNG or SVG by its extension. The file is
-    /// written under a temporary name in the same directory and then renamed,
-    /// so `path` never holds a half-written file.
-    pub fn save(&self, path: impl AsRef<Path>) -> Result<(), Error> {
-        let path = path.as_ref();
-        let bytes = self.encode(Format::from_path(path)?)?;
-        crate::write_atomically(path, &bytes)
-    }
 }

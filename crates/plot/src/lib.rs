@@ -31,6 +31,7 @@ pub mod axis;
 pub mod canvas;
 pub mod color;
 pub mod compose;
+mod encode;
 pub mod heatmap;
 pub mod line;
 mod raster;

@@ -15,9 +15,9 @@ use lowdisc_render::geometry::Sphere;
 use lowdisc_render::integrator::{DIMS_PER_BOUNCE, PathIntegrator, PathStats};
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
-use lowdisc_render::render::{Shot, trace_camera_sample, trace_spectral_sample};
+use lowdisc_render::render::{Shot, trace_sample};
 use lowdisc_render::scene::{Scene, SceneBuilder};
-use lowdisc_render::spectrum::Rgb;
+use lowdisc_render::spectrum::{Rgb, SampledSpectrum};
 use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 
 /// One request made of the sampler.
@@ -122,7 +122,7 @@ fn trace((scene, view): &(Scene, View), max_depth: u32, seed: u64) -> (Rgb, Vec<
         integrator: &integrator,
         seed,
     };
-    let (l, _) = trace_camera_sample(&shot, &mut sampler, [1, 2], 0, &mut stats);
+    let (l, _) = trace_sample::<Rgb, _>(&shot, &mut sampler, [1, 2], 0, &mut stats);
     (l, sampler.log)
 }
 
@@ -177,7 +177,7 @@ fn spectral_samples_draw_the_wavelength_first_then_the_rgb_layout_shifted_by_one
         integrator: &integrator,
         seed: 0,
     };
-    let (xyz, _) = trace_spectral_sample(&shot, &mut sampler, [1, 2], 0, &mut stats);
+    let (xyz, _) = trace_sample::<SampledSpectrum, _>(&shot, &mut sampler, [1, 2], 0, &mut stats);
     assert!(xyz.g > 0.0, "lit: {xyz:?}");
     let mut want = vec![Draw::Start(0), Draw::OneD(0), Draw::Pixel2d, Draw::TwoD(1)];
     for k in 0..3 {

@@ -22,9 +22,10 @@
 use crate::part::{PartInfo, RenderPart};
 use exr::prelude::{
     AnyChannel, AnyChannels, AttributeValue, Encoding, FlatSamples, Image, ImageAttributes,
-    IntegerBounds, Layer, LayerAttributes, ReadChannels, ReadLayers, SmallVec, Text, Vec2,
-    WritableImage,
+    IntegerBounds, Layer, LayerAttributes, SmallVec, Text, Vec2, WritableImage,
 };
+use lowdisc_image::ImageError;
+use lowdisc_image::io::read_exr_layer;
 use lowdisc_render::film::{PixelBounds, PixelSum};
 use lowdisc_render::render::SampleRange;
 use serde::{Deserialize, Serialize};
@@ -54,6 +55,12 @@ impl std::fmt::Display for PartError {
 }
 
 impl std::error::Error for PartError {}
+
+impl From<ImageError> for PartError {
+    fn from(e: ImageError) -> Self {
+        PartError(format!("not a readable EXR file ({e})"))
+    }
+}
 
 impl From<lowdisc_files::Error> for PartError {
     fn from(e: lowdisc_files::Error) -> Self {
@@ -147,33 +154,28 @@ pub fn encode_part(part: &RenderPart) -> Result<Vec<u8>, PartError> {
     Ok(out.into_inner())
 }
 
-/// Decodes a part file's bytes.
+/// Decodes a part file's bytes: the EXR is read by the image crate's
+/// reader ([`read_exr_layer`]), which hands over the headers first; the part
+/// header and the data window are checked on them before any pixel is
+/// decoded.
 pub fn decode_part(bytes: &[u8]) -> Result<RenderPart, PartError> {
-    let exr_error = |e: exr::error::Error| bad(format!("not a readable EXR file ({e})"));
-    let meta =
-        exr::meta::MetaData::read_from_buffered(Cursor::new(bytes), false).map_err(exr_error)?;
-    let [header] = &meta.headers[..] else {
-        return Err(bad("a part file has exactly one EXR layer"));
-    };
-    let key = Text::new_or_none(HEADER_ATTRIBUTE).expect("an ASCII name");
-    let info = parse_header(header.own_attributes.other.get(&key))?;
+    let (info, layer) = read_exr_layer(bytes, |headers| {
+        let [header] = headers else {
+            return Err(bad("a part file has exactly one EXR layer"));
+        };
+        let key = Text::new_or_none(HEADER_ATTRIBUTE).expect("an ASCII name");
+        let info = parse_header(header.own_attributes.other.get(&key))?;
+        let w = info.window;
+        let data = &header.own_attributes.layer_position;
+        if (data.0, data.1) != (w.min[0], w.min[1])
+            || (header.layer_size.0, header.layer_size.1) != (w.width(), w.height())
+        {
+            return Err(bad("the EXR data window differs from the header's window"));
+        }
+        Ok(info)
+    })?;
     let w = info.window;
-    let data = &header.own_attributes.layer_position;
-    if (data.0, data.1) != (w.min[0], w.min[1])
-        || (header.layer_size.0, header.layer_size.1) != (w.width(), w.height())
-    {
-        return Err(bad("the EXR data window differs from the header's window"));
-    }
-    let image = exr::prelude::read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .non_parallel()
-        .from_buffered(Cursor::new(bytes))
-        .map_err(exr_error)?;
-    let channels = &image.layer_data.channel_data.list;
+    let channels = &layer.channel_data.list;
     let n = w.area();
     let u32s = |name: String| -> Result<&Vec<u32>, PartError> {
         match channels.iter().find(|c| c.name.to_string() == name) {

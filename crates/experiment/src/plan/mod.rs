@@ -1,7 +1,7 @@
 //! The experiment as a plan of independent units ([`Plan`]): every render
 //! the one-machine run makes, listed in the order that run makes them, so
 //! that any scheduler (a Slurm job array, GNU parallel, one loop) can run
-//! them in any order and on any machine, and [`crate::assemble`] can turn
+//! them in any order and on any machine, and the assembly (`assemble`) can turn
 //! their images into the same report.
 //!
 //! A unit is one render ([`Work`]): one piece of a reference that is not
@@ -29,7 +29,7 @@ use lowdisc_render::render::RenderOptions;
 
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::cut::{Cut, Piece, cut, sample_range};
-use crate::run::options;
+use crate::subject::options;
 use crate::sweep::THRESHOLDS;
 
 /// Which reference a reference unit renders.
@@ -251,7 +251,7 @@ pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
 pub struct Plan {
     /// The experiment (its `out` is the plan's folder).
     pub config: ExperimentConfig,
-    /// The hash of the scene's content ([`crate::run`]'s scene loading).
+    /// The hash of the scene's content ([`crate::subject::load`]).
     pub scene_hash: u64,
     /// Whether the main and the convergence reference were cached when the
     /// plan was made (cached references have no units).

@@ -261,7 +261,7 @@ a ratio whose interval excludes 1.\n\n",
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::comparison::MetricStats;
+    use crate::results::MetricStats;
     use crate::results::{ReferenceInfo, result};
     use crate::stats::{Summary, paired_ratio};
 

@@ -297,7 +297,7 @@ mod tests {
         // The paired entry, not the ratio of the means, when there is one.
         let (seeds, base) = ([1.0, 2.0, 4.0], [2.0, 4.0, 8.0]);
         let paired = crate::stats::paired_ratio(&seeds, &base).unwrap();
-        a.statistics = vec![crate::comparison::MetricStats {
+        a.statistics = vec![crate::results::MetricStats {
             metric: "relmse",
             summary: crate::stats::Summary::of(&seeds),
             ratio_to_baseline: Some(paired),
@@ -312,7 +312,7 @@ mod tests {
         // An interval that contains 1 is not bold.
         let (seeds, base) = ([1.0, 2.0, 4.0], [2.0, 1.0, 4.0]);
         a = result("halton", 1.0);
-        a.statistics = vec![crate::comparison::MetricStats {
+        a.statistics = vec![crate::results::MetricStats {
             metric: "relmse",
             summary: crate::stats::Summary::of(&seeds),
             ratio_to_baseline: crate::stats::paired_ratio(&seeds, &base),

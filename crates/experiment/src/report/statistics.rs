@@ -5,8 +5,9 @@
 
 use std::fmt::Write as _;
 
-use crate::comparison::{BASELINE, MetricStats};
+use crate::comparison::BASELINE;
 use crate::config::ExperimentConfig;
+use crate::results::MetricStats;
 use crate::results::Results;
 use crate::stats::{PairedRatio, Verdict};
 

@@ -37,13 +37,15 @@ use lowdisc_metrics::{NyquistPower, SpectralPeak};
 use lowdisc_render::preset::ScenePreset;
 use serde::Serialize;
 
-use crate::assemble::Measures;
 use crate::config::ExperimentConfig;
+use crate::cut::samples;
 use crate::plan::{Unit, Work};
-use crate::progress::{Progress, Stage, samples};
+use crate::progress::{Progress, Stage};
 use crate::quality::{DEFAULT_BLUR_SIGMA, DEFAULT_EMITTER_BORDER, Evaluator, Quality};
 use crate::reference::main_reference;
 use crate::results::ReferenceInfo;
+use crate::source::{Measures, Rendered};
+use crate::subject::load;
 use crate::units::render_unit;
 pub use summary::{SamplerSummary, summarise};
 
@@ -322,7 +324,7 @@ fn study_scene(
     observer: &dyn Progress,
 ) -> Result<SceneResult> {
     let experiment = config.experiment(study_scene);
-    let (subject, hash) = crate::run::load(&experiment, observer)?;
+    let (subject, hash) = load(&experiment, observer)?;
     let view = subject.view_at(experiment.resolution)?;
     let evaluator = Evaluator::new(
         &subject.scene,
@@ -357,7 +359,7 @@ fn study_scene(
             };
             let out = render_unit(&experiment, &subject, hash, &unit, &stage)?;
             let time_s = out.render_time_s;
-            let crate::assemble::Rendered::Image(image) = out.rendered else {
+            let Rendered::Image(image) = out.rendered else {
                 bail!("a run left sums, not an image");
             };
             if config.save_renders && seed == 0 {

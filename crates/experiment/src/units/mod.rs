@@ -18,12 +18,12 @@ use anyhow::{Context, Result, bail};
 use lowdisc_render::render::render;
 use lowdisc_split::RenderPart;
 
-use crate::assemble::{Rendered, UnitOutput, UnitSource};
 use crate::config::ExperimentConfig;
 use crate::plan::Unit;
 use crate::plan::file::PlanFile;
 use crate::progress::{Progress, Stage};
-use crate::run::{Subject, load};
+use crate::source::{Rendered, UnitOutput, UnitSource};
+use crate::subject::{Subject, load};
 use lock::{Lock, host_name, unix_now};
 use store::{Record, Store};
 

@@ -26,7 +26,7 @@ use lowdisc_image::ImageFormat;
 use lowdisc_split::{decode_part, encode_part};
 use serde::{Deserialize, Serialize};
 
-use crate::assemble::Rendered;
+use crate::source::Rendered;
 use crate::stats::{FNV_OFFSET, fnv1a};
 
 /// The `format` field of a unit record.

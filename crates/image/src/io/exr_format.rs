@@ -7,6 +7,8 @@
 //! channel of any name, is read as grey. Luminance-chroma (`Y`, `RY`, `BY`)
 //! files, subsampled channels and deep data are refused as unsupported.
 //! Writing produces one RGB layer of 32-bit floats, ZIP-compressed scanlines.
+//! The reader ([`read_exr_layer`]) is also the part files' (`lowdisc-split`),
+//! which check their own header on it before the pixels are decoded.
 //! Both directions run on the calling thread (`exr` would otherwise build a
 //! new thread pool on every call, inside the renderer's own pool).
 
@@ -44,23 +46,45 @@ fn find_channel(names: &[String], name: &str) -> Option<usize> {
     })
 }
 
-/// Decodes an OpenEXR file held in memory.
-pub fn decode(bytes: &[u8]) -> Result<RgbImage, ImageError> {
-    // Read the headers alone first, so an absurd data window is refused
-    // before `exr` allocates anything for the pixels.
+/// The first valid layer of an OpenEXR file: every channel, at the
+/// layer's largest resolution level, with the layer's attributes.
+pub type ExrLayer = exr::image::Layer<exr::image::AnyChannels<FlatSamples>>;
+
+/// Reads the first valid layer of the OpenEXR file held in `bytes`, on the
+/// calling thread: the one EXR reader of the workspace. The headers are
+/// read and checked alone first (no deep data, every layer within
+/// [`crate::MAX_PIXELS`]), so an absurd data window is refused before
+/// anything is allocated for the pixels, and handed to `inspect`, which
+/// can refuse the file on its headers too; its value is returned with the
+/// layer.
+///
+/// ```
+/// use lowdisc_image::{RgbImage, encode_image, ImageFormat, WriteOptions};
+/// use lowdisc_image::io::read_exr_layer;
+///
+/// let image = RgbImage::from_pixels(2, 1, vec![[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]).unwrap();
+/// let bytes = encode_image(&image, ImageFormat::Exr, &WriteOptions::default()).unwrap();
+/// let (layers, layer) =
+///     read_exr_layer(&bytes, |headers| Ok::<_, lowdisc_image::ImageError>(headers.len())).unwrap();
+/// assert_eq!((layers, layer.size.0, layer.size.1), (1, 2, 1));
+/// ```
+pub fn read_exr_layer<T, E: From<ImageError>>(
+    bytes: &[u8],
+    inspect: impl FnOnce(&[exr::meta::header::Header]) -> Result<T, E>,
+) -> Result<(T, ExrLayer), E> {
     let meta =
         exr::meta::MetaData::read_from_buffered(Cursor::new(bytes), false).map_err(convert)?;
     if meta.headers.is_empty() {
-        return Err(malformed("EXR file has no header"));
+        return Err(malformed("EXR file has no header").into());
     }
     for header in &meta.headers {
         if header.deep {
-            return Err(unsupported("EXR deep data"));
+            return Err(unsupported("EXR deep data").into());
         }
         checked_pixel_count(header.layer_size.0, header.layer_size.1)
             .map_err(|e| ImageError::new(e.kind(), format!("EXR layer: {}", e.message())))?;
     }
-
+    let inspected = inspect(&meta.headers)?;
     let image = exr::prelude::read()
         .no_deep_data()
         .largest_resolution_level()
@@ -70,7 +94,12 @@ pub fn decode(bytes: &[u8]) -> Result<RgbImage, ImageError> {
         .non_parallel()
         .from_buffered(Cursor::new(bytes))
         .map_err(convert)?;
-    let layer = &image.layer_data;
+    Ok((inspected, image.layer_data))
+}
+
+/// Decodes an OpenEXR file held in memory.
+pub fn decode(bytes: &[u8]) -> Result<RgbImage, ImageError> {
+    let ((), layer) = read_exr_layer(bytes, |_| Ok::<_, ImageError>(()))?;
     let (width, height) = (layer.size.0, layer.size.1);
     let n = checked_pixel_count(width, height)?;
     let channels = &layer.channel_data.list;

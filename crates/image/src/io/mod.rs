@@ -17,6 +17,7 @@ mod rgbe;
 use std::path::Path;
 
 pub use atomic::{write_atomically, write_bytes_atomically};
+pub use exr_format::{ExrLayer, read_exr_layer};
 pub use ldr::Transfer;
 pub use rgbe::{rgb_to_rgbe, rgbe_to_rgb};
 

@@ -14,8 +14,7 @@
 //! * [`dielectric`]: smooth and rough (Walter et al. 2007) dielectric, thin dielectric;
 //! * [`layered`]: pbrt-v4's stochastic layered BxDF (coated diffuse/conductor);
 //! * [`world`]: [`Bsdf`], a BxDF plus its shading frame, in world space;
-//! * [`material`]: material parameters (constant or textured) to a [`Bsdf`];
-//! * [`metals`]: RGB optical constants of pbrt-v4's named metal spectra.
+//! * [`material`]: material parameters (constant or textured) to a [`Bsdf`].
 
 pub mod conductor;
 pub mod dielectric;
@@ -23,7 +22,6 @@ pub mod diffuse;
 pub mod fresnel;
 pub mod layered;
 pub mod material;
-pub mod metals;
 pub mod microfacet;
 pub mod world;
 

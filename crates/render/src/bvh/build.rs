@@ -1,6 +1,6 @@
-//! Binned-SAH construction of the binary tree (parallel), flattened depth first.
+//! Binned-SAH construction of the binary tree (parallel), which the BVH
+//! then flattens depth first (module `flatten`).
 
-use super::flatten::flatten;
 use super::{LEAF_LANES, MAX_DEPTH, Node};
 use crate::math::{Bounds3, Vec3};
 use rayon::prelude::*;
@@ -370,12 +370,13 @@ impl Builder {
 }
 
 /// Builds the binary tree over primitives given by their boxes, leaving out
-/// those with an empty or non-finite box: the depth-first nodes, the leaf
-/// order and the tree's summary; `None` when no primitive is left.
+/// those with an empty or non-finite box: the tree (which the caller
+/// flattens depth first), the leaf order and the tree's summary; `None` when
+/// no primitive is left.
 pub(super) fn build_binary(
     prim_bounds: &[Bounds3],
     opts: BuildOptions,
-) -> Option<(Vec<Node>, Vec<u32>, Summary)> {
+) -> Option<(BuildNode, Vec<u32>, Summary)> {
     let mut prims: Vec<BuildPrim> = prim_bounds
         .par_iter()
         .enumerate()
@@ -397,8 +398,5 @@ pub(super) fn build_binary(
     let boxes = Boxes::of(&prims, true);
     let (root, summary) = builder.build(&mut prims, &boxes, 0, 0);
     debug_assert!(summary.max_depth < MAX_DEPTH);
-    let mut nodes = Vec::with_capacity(summary.nodes);
-    flatten(&root, &mut nodes);
-    drop(root);
-    Some((nodes, prims.iter().map(|p| p.index).collect(), summary))
+    Some((root, prims.iter().map(|p| p.index).collect(), summary))
 }

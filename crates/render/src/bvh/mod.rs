@@ -158,9 +158,12 @@ impl Bvh {
     /// or non-finite box are left out (no ray can hit them).
     pub fn build_with(prim_bounds: &[Bounds3], opts: BuildOptions) -> Bvh {
         let start = Instant::now();
-        let Some((nodes, prim_order, summary)) = build::build_binary(prim_bounds, opts) else {
+        let Some((root, prim_order, summary)) = build::build_binary(prim_bounds, opts) else {
             return Bvh::default();
         };
+        let mut nodes = Vec::with_capacity(summary.nodes);
+        flatten::flatten(&root, &mut nodes);
+        drop(root);
         let wide = wide::collapse(&nodes, &prim_order);
         let build_time = start.elapsed();
         let stats = BvhStats {

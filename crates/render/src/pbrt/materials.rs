@@ -7,8 +7,8 @@ mod textures;
 
 use super::loader::PbrtLoader;
 use super::state::MatRef;
-use crate::bsdf::metals::{named_glass_eta, named_spectrum_rgb};
 use crate::bsdf::{Bump, BumpedMaterial, ConductorSpec, Material, MixMaterial, Roughness};
+use crate::spectrum::metals::{named_glass_eta, named_spectrum_rgb};
 use crate::spectrum::named::{NamedSpectrum, intern_measured, named_metal, planck};
 use crate::spectrum::{Rgb, spectrum_file_to_rgb, spectrum_samples_to_rgb};
 use crate::texture::{ColorEncoding, FloatTexture, SpectrumTexture, TexImage, TextureEvalContext};

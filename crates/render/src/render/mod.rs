@@ -38,16 +38,18 @@
 //! **Progress** goes through a [`ProgressSink`] (any `Fn(Progress) + Sync`
 //! closure): the library itself never prints.
 
+mod camera_sample;
+
 pub use crate::error::RenderError;
 pub use crate::settings::ranges::{MAX_SPP, MAX_THREADS};
 pub use crate::settings::{RenderOptions, SampleRange};
+pub use camera_sample::{FilmColour, Shot, trace_sample};
 
-use crate::camera::camera_sample;
 use crate::film::{Film, FilmError, FilmTile, PixelBounds, PixelSum};
-use crate::integrator::{PathIntegrator, PathStats};
+use crate::integrator::PathStats;
 use crate::scene::Scene;
-use crate::spectrum::sensor::{output_matrix, sample_xyz};
-use crate::spectrum::{Rgb, SampledSpectrum, SampledWavelengths};
+use crate::spectrum::sensor::output_matrix;
+use crate::spectrum::{Rgb, SampledSpectrum};
 use crate::view::View;
 use lowdisc::catalog::{Sampler, SamplerConfig};
 use lowdisc::pixel::PixelSampler;
@@ -338,9 +340,9 @@ fn render_tile_with<S: PixelSampler>(
     for visit in walk {
         let (pixel, s) = (visit.pixel, visit.index);
         let (l, weight) = if opts.spectral {
-            trace_spectral_sample(&shot, &mut sampler, pixel, s, &mut stats)
+            trace_sample::<SampledSpectrum, _>(&shot, &mut sampler, pixel, s, &mut stats)
         } else {
-            trace_camera_sample(&shot, &mut sampler, pixel, s, &mut stats)
+            trace_sample::<Rgb, _>(&shot, &mut sampler, pixel, s, &mut stats)
         };
         if visit.keep {
             film.add_sample(pixel, l, weight);
@@ -352,64 +354,4 @@ fn render_tile_with<S: PixelSampler>(
         stats,
         samples,
     }
-}
-
-/// What every camera sample of a render reads: the scene, the view, the
-/// path tracer and the seed of the BSDFs' random walks.
-#[derive(Clone, Copy, Debug)]
-pub struct Shot<'a> {
-    /// The scene.
-    pub scene: &'a Scene,
-    /// The camera, film and filter.
-    pub view: &'a View,
-    /// The path tracer.
-    pub integrator: &'a PathIntegrator,
-    /// The seed of the BSDFs' random walks (the sampler's seed).
-    pub seed: u64,
-}
-
-/// One camera sample, the path of every sample from the sampler to the film:
-/// starts sample `index` of `pixel` at dimension 0, draws the film position
-/// (`get_pixel_2d`) and the lens (`get_2d`), turns them into a camera ray
-/// through the pixel filter's importance sampling, and traces it with
-/// the shot's integrator (whose vertices draw
-/// [`crate::integrator::DIMS_PER_BOUNCE`] dimensions each). Returns the
-/// radiance and the filter weight the film adds it with.
-pub fn trace_camera_sample<S: PixelSampler>(
-    shot: &Shot<'_>,
-    sampler: &mut S,
-    pixel: [i32; 2],
-    index: u32,
-    stats: &mut PathStats,
-) -> (Rgb, f32) {
-    sampler.start_pixel_sample([pixel[0] as u32, pixel[1] as u32], index, 0);
-    let u_film = sampler.get_pixel_2d();
-    let u_lens = sampler.get_2d();
-    let cs = camera_sample(shot.view.filter(), pixel, u_film, u_lens);
-    let ray = shot.view.camera().generate_ray_for(&cs);
-    let l = (shot.integrator).li(shot.scene, ray, sampler, shot.seed, stats);
-    (l, cs.filter_weight)
-}
-
-/// [`trace_camera_sample`] in spectral mode: draws the wavelength sample
-/// (`get_1d`, dimension 0) after starting the sample, then the film position
-/// and the lens (dimensions 1-2), traces the four wavelengths together and
-/// returns the sensor's XYZ (in an [`Rgb`]'s fields) and the filter weight.
-pub fn trace_spectral_sample<S: PixelSampler>(
-    shot: &Shot<'_>,
-    sampler: &mut S,
-    pixel: [i32; 2],
-    index: u32,
-    stats: &mut PathStats,
-) -> (Rgb, f32) {
-    sampler.start_pixel_sample([pixel[0] as u32, pixel[1] as u32], index, 0);
-    let u_lambda = sampler.get_1d();
-    let u_film = sampler.get_pixel_2d();
-    let u_lens = sampler.get_2d();
-    let lambda = SampledWavelengths::sample_visible(u_lambda);
-    let cs = camera_sample(shot.view.filter(), pixel, u_film, u_lens);
-    let ray = shot.view.camera().generate_ray_for(&cs);
-    let (scene, seed) = (shot.scene, shot.seed);
-    let l: SampledSpectrum = (shot.integrator).li_for(scene, ray, sampler, seed, &lambda, stats);
-    (sample_xyz(l, &lambda), cs.filter_weight)
 }

@@ -3,7 +3,7 @@
 //! it came from ([`Given`]), so that a bad value is reported where it was
 //! written.
 
-use super::options::SampleRange;
+use super::sample_range::SampleRange;
 use crate::bsdf::LayeredExitWeight;
 use crate::film::PixelBounds;
 use lowdisc::catalog::SamplerName;

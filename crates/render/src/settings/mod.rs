@@ -37,9 +37,11 @@
 mod layer;
 mod options;
 pub mod ranges;
+mod sample_range;
 
 pub use layer::{Given, SettingsLayer};
-pub use options::{RenderOptions, SampleRange};
+pub use options::RenderOptions;
+pub use sample_range::SampleRange;
 
 use crate::error::RenderError;
 use crate::film::FilmParams;

@@ -4,7 +4,7 @@
 //! [`crate::render::RenderOptions::validate`] calls them for options built
 //! in code. Each check returns the problem in a sentence without its source.
 
-use crate::render::SampleRange;
+use super::sample_range::SampleRange;
 
 /// The most samples per pixel accepted.
 pub const MAX_SPP: u32 = 1 << 24;

@@ -217,46 +217,6 @@ impl Colour for SampledSpectrum {
     }
 }
 
-/// Lane-wise arithmetic for a `[f32; N]` newtype (`+ - * /` with itself and
-/// with `f32`, and their assignments).
-macro_rules! impl_lanes {
-    ($t:ident, $n:expr) => {
-        impl_lanes!(@op $t, Add, add, AddAssign, add_assign, +);
-        impl_lanes!(@op $t, Sub, sub, SubAssign, sub_assign, -);
-        impl_lanes!(@op $t, Mul, mul, MulAssign, mul_assign, *);
-        impl_lanes!(@op $t, Div, div, DivAssign, div_assign, /);
-    };
-    (@op $t:ident, $tr:ident, $f:ident, $tra:ident, $fa:ident, $op:tt) => {
-        impl std::ops::$tr for $t {
-            type Output = $t;
-            #[inline]
-            fn $f(self, o: $t) -> $t {
-                $t(std::array::from_fn(|i| self.0[i] $op o.0[i]))
-            }
-        }
-        impl std::ops::$tr<f32> for $t {
-            type Output = $t;
-            #[inline]
-            fn $f(self, s: f32) -> $t {
-                $t(self.0.map(|v| v $op s))
-            }
-        }
-        impl std::ops::$tra for $t {
-            #[inline]
-            fn $fa(&mut self, o: $t) {
-                *self = *self $op o;
-            }
-        }
-        impl std::ops::$tra<f32> for $t {
-            #[inline]
-            fn $fa(&mut self, s: f32) {
-                *self = *self $op s;
-            }
-        }
-    };
-}
-pub(crate) use impl_lanes;
-
 #[cfg(test)]
 mod tests {
     use super::*;

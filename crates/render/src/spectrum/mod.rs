@@ -13,9 +13,12 @@
 //!   sigmoid-polynomial table, fitted at build time ([`uplift`]); named
 //!   metals and blackbodies are evaluated as spectra ([`named`]); the film's
 //!   sensor turns the samples into XYZ and then sRGB ([`sensor`]).
+//! * Named spectra in RGB mode: the named metals' band averages and the
+//!   named glasses' refractive indices ([`metals`]).
 
 pub mod colour;
 pub mod file;
+pub mod metals;
 pub mod named;
 pub mod sampled;
 pub mod sensor;

@@ -7,7 +7,7 @@
 //! pbrt-v4 and Mitsuba also ship, embedded from `data/spectra/*.spd`
 //! (copied from Mitsuba's distribution; its licence is
 //! `data/spectra/LICENSE-mitsuba.txt`). Each keeps its RGB-mode value, the
-//! band averages of [`crate::bsdf::metals::NAMED_METALS`].
+//! band averages of [`super::metals::NAMED_METALS`].
 //!
 //! A blackbody of temperature `T` is Planck's law; like every emission
 //! spectrum here it is scaled so that `∫ ȳ(λ) s(λ) dλ = 1` (1 nm sums), which
@@ -16,7 +16,7 @@
 
 use super::Rgb;
 use super::file::parse_spectrum_text;
-use crate::bsdf::metals::NAMED_METALS;
+use super::metals::NAMED_METALS;
 use lowdisc_colour::cie::{LAMBDA_MAX, LAMBDA_MIN, Tabulated, y_integral};
 use std::path::Path;
 use std::sync::LazyLock;

@@ -16,7 +16,6 @@
 //! terminating the secondary wavelengths, is not modelled: every index of
 //! refraction here is one number.)
 
-use super::colour::impl_lanes;
 use lowdisc_colour::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// Wavelengths carried by one camera sample.
@@ -25,6 +24,45 @@ pub const N_WAVELENGTHS: usize = 4;
 /// A spectrum's values at the [`N_WAVELENGTHS`] wavelengths of a sample.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SampledSpectrum(pub [f32; N_WAVELENGTHS]);
+
+/// Lane-wise arithmetic for a `[f32; N]` newtype (`+ - * /` with itself and
+/// with `f32`, and their assignments).
+macro_rules! impl_lanes {
+    ($t:ident, $n:expr) => {
+        impl_lanes!(@op $t, Add, add, AddAssign, add_assign, +);
+        impl_lanes!(@op $t, Sub, sub, SubAssign, sub_assign, -);
+        impl_lanes!(@op $t, Mul, mul, MulAssign, mul_assign, *);
+        impl_lanes!(@op $t, Div, div, DivAssign, div_assign, /);
+    };
+    (@op $t:ident, $tr:ident, $f:ident, $tra:ident, $fa:ident, $op:tt) => {
+        impl std::ops::$tr for $t {
+            type Output = $t;
+            #[inline]
+            fn $f(self, o: $t) -> $t {
+                $t(std::array::from_fn(|i| self.0[i] $op o.0[i]))
+            }
+        }
+        impl std::ops::$tr<f32> for $t {
+            type Output = $t;
+            #[inline]
+            fn $f(self, s: f32) -> $t {
+                $t(self.0.map(|v| v $op s))
+            }
+        }
+        impl std::ops::$tra for $t {
+            #[inline]
+            fn $fa(&mut self, o: $t) {
+                *self = *self $op o;
+            }
+        }
+        impl std::ops::$tra<f32> for $t {
+            #[inline]
+            fn $fa(&mut self, s: f32) {
+                *self = *self $op s;
+            }
+        }
+    };
+}
 
 impl_lanes!(SampledSpectrum, 4);
 

@@ -1,4 +1,5 @@
-//! `lowdisc experiment`: the paper's experiment in one command.
+//! `lowdisc experiment` without a subcommand: the paper's experiment in one
+//! command.
 //!
 //! The arguments ([`ExperimentArgs`]) are turned into a
 //! [`lowdisc_experiment::ExperimentConfig`] (presets `--quick` and
@@ -6,7 +7,7 @@
 //! [`lowdisc_experiment::run`], which does the work and writes the report
 //! folder; the progress it reports is printed on stderr unless `--quiet`.
 //! `experiment plan|unit|merge|status` (the same run cut into units) are in
-//! [`crate::experiment_units`].
+//! [`super::units`].
 
 use std::path::PathBuf;
 
@@ -16,7 +17,6 @@ use lowdisc::catalog::SamplerConfig;
 use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig};
 use lowdisc_render::preset::ScenePreset;
 
-use crate::experiment_units::Action;
 use crate::parse;
 use crate::progress::Reporter;
 
@@ -260,29 +260,6 @@ impl Experiment {
     /// Whether `--quiet` was given.
     pub fn quiet(&self) -> bool {
         self.quiet
-    }
-}
-
-/// `experiment`: the one-machine run, or one of the subcommands of a run
-/// cut into units ([`crate::experiment_units`]).
-#[derive(Debug, Args)]
-#[command(args_conflicts_with_subcommands = true)]
-pub struct ExperimentCommand {
-    /// A subcommand of the run cut into units.
-    #[command(subcommand)]
-    action: Option<Action>,
-    /// The one-machine run's arguments.
-    #[command(flatten)]
-    args: ExperimentArgs,
-}
-
-impl ExperimentCommand {
-    /// Runs the one-machine experiment or the subcommand.
-    pub fn run(self) -> Result<()> {
-        match self.action {
-            Some(action) => crate::experiment_units::run(action, std::io::stdout().lock()),
-            None => run(&self.args.into_config()?),
-        }
     }
 }
 

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use lowdisc_experiment::stats::MeanSd;
 
-use crate::claim::{ClaimConfig, ClaimRow};
+use super::measure::{ClaimConfig, ClaimRow};
 
 /// The three measured quantities: file stem, title, accessor.
 type Quantity = (&'static str, &'static str, fn(&ClaimRow) -> MeanSd);

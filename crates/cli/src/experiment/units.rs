@@ -12,7 +12,7 @@ use clap::{Args, Subcommand};
 use lowdisc_experiment::status::{Status, UnitState};
 use lowdisc_experiment::units::UnitRun;
 
-use crate::experiment::{Experiment, ExperimentArgs};
+use super::one_machine::{Experiment, ExperimentArgs, print_answer};
 use crate::progress::{Reporter, duration, si};
 
 /// The long help of `experiment plan`.
@@ -94,7 +94,7 @@ pub fn run(action: Action, out: impl Write) -> Result<()> {
             let reporter = Reporter::new(args.quiet);
             let outcome = lowdisc_experiment::planned::merge(&args.dir, &reporter)?;
             reporter.summary(&outcome.files);
-            crate::experiment::print_answer(&outcome, out)
+            print_answer(&outcome, out)
         }
         Action::Status(args) => {
             let status = lowdisc_experiment::status::status(&args.dir)?;

@@ -2,43 +2,23 @@
 //! sequence or a text file, printed as a table or as JSON.
 //!
 //! The metrics come from `lowdisc-metrics`; this module only picks them,
-//! times them and prints them (see [`crate::metric_rows`] for the rows).
+//! times them and prints them (see [`rows`] for the rows).
 
 use std::io::Write;
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use lowdisc::catalog::{Order, SamplerConfig};
 use lowdisc_metrics::PointSet;
 use serde::Serialize;
 
-use crate::metric_rows::{self, MetricRow};
 use crate::progress::Reporter;
 use crate::{limits, parse, pointfile};
 
-/// Which metric to compute.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Metric {
-    /// Exact star discrepancy (refused when too costly: use star-bounds).
-    Star,
-    /// Lower and upper bounds of the star discrepancy, with their methods.
-    StarBounds,
-    /// The paper's lower bound only: the worst of --boxes random anchored boxes.
-    StarLower,
-    /// Warnock's L2-star discrepancy (square root, as scipy).
-    L2Star,
-    /// Centered L2 discrepancy (squared, as scipy).
-    Cd,
-    /// Wrap-around L2 discrepancy (squared, as scipy).
-    Wd,
-    /// Mixture L2 discrepancy (squared, as scipy).
-    Md,
-    /// Minimum Euclidean and toroidal distance, and mean nearest-neighbour distances.
-    Mindist,
-    /// Every metric above (exact star only when affordable).
-    All,
-}
+mod rows;
+
+use rows::{Metric, MetricRow};
 
 /// The long help of `discrepancy` (`lowdisc discrepancy --help`).
 pub const LONG_ABOUT: &str = "\
@@ -127,7 +107,7 @@ pub enum Source {
 pub struct DiscrepancyConfig {
     source: Source,
     metric: Metric,
-    options: metric_rows::Options,
+    options: rows::Options,
     max_memory: u64,
     json: bool,
     quiet: bool,
@@ -165,7 +145,7 @@ impl DiscrepancyArgs {
         Ok(DiscrepancyConfig {
             source,
             metric: self.metric,
-            options: metric_rows::Options {
+            options: rows::Options {
                 boxes: self.boxes,
                 seed: self.seed,
                 max_work: self.max_work,
@@ -196,10 +176,10 @@ pub fn run(config: &DiscrepancyConfig, mut out: impl Write) -> Result<()> {
             points.len(),
             points.dims()
         ),
-        metric_rows::computations(config.metric),
+        rows::computations(config.metric),
         "metrics",
     );
-    let rows = metric_rows::compute(&points, config.metric, &config.options, &progress)?;
+    let rows = rows::compute(&points, config.metric, &config.options, &progress)?;
     progress.end_stage();
     if config.json {
         let report = Report {
@@ -217,7 +197,7 @@ pub fn run(config: &DiscrepancyConfig, mut out: impl Write) -> Result<()> {
             points.len(),
             points.dims()
         )?;
-        metric_rows::write_table(&mut out, &rows)?;
+        rows::write_table(&mut out, &rows)?;
     }
     out.flush()?;
     Ok(())

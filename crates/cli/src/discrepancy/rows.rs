@@ -5,6 +5,7 @@ use std::io::Write;
 use std::time::Instant;
 
 use anyhow::{Result, bail};
+use clap::ValueEnum;
 use lowdisc_metrics::{
     BoundsOptions, DistanceMetric, ExactOptions, L2Method, MetricsError, PointSet, cost,
     distance_stats, l2_discrepancies, l2_discrepancy, random_box_lower_bound, star_bounds,
@@ -12,9 +13,31 @@ use lowdisc_metrics::{
 };
 use serde::Serialize;
 
-use crate::discrepancy::Metric;
 use crate::limits;
 use crate::progress::Reporter;
+
+/// Which metric to compute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Metric {
+    /// Exact star discrepancy (refused when too costly: use star-bounds).
+    Star,
+    /// Lower and upper bounds of the star discrepancy, with their methods.
+    StarBounds,
+    /// The paper's lower bound only: the worst of --boxes random anchored boxes.
+    StarLower,
+    /// Warnock's L2-star discrepancy (square root, as scipy).
+    L2Star,
+    /// Centered L2 discrepancy (squared, as scipy).
+    Cd,
+    /// Wrap-around L2 discrepancy (squared, as scipy).
+    Wd,
+    /// Mixture L2 discrepancy (squared, as scipy).
+    Md,
+    /// Minimum Euclidean and toroidal distance, and mean nearest-neighbour distances.
+    Mindist,
+    /// Every metric above (exact star only when affordable).
+    All,
+}
 
 /// Options shared by the metrics.
 #[derive(Debug, Clone, Copy)]

@@ -3,7 +3,7 @@
 //! glasses (`"glass-BK7"`, ...).
 //!
 //! Metals: computed by this project with
-//! [`crate::spectrum::spectrum_file_to_rgb`] (band averages of the measured
+//! [`super::spectrum_file_to_rgb`] (band averages of the measured
 //! spectra: red 600–700 nm, green 500–600 nm, blue 400–500 nm) from the
 //! luxpop.com optical-constant files shipped with the shared scenes
 //! (`scenes/spectra/{Ag,Al,Au,Cu}.{eta,k}.spd`, the same data pbrt-v4 embeds);
@@ -15,7 +15,7 @@
 //! index, so each glass is reduced to its catalogue refractive index `n_d` at
 //! the helium d line (587.6 nm, Schott data sheets).
 
-use crate::spectrum::Rgb;
+use super::Rgb;
 
 /// `(name, [r, g, b])` for the named metal spectra.
 pub const NAMED_METALS: [(&str, [f32; 3]); 8] = [
