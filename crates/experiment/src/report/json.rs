@@ -10,7 +10,7 @@ use crate::plan::{Target, reference_cut};
 use crate::results::Results;
 
 /// The CPU's model name from `/proc/cpuinfo` (`unknown` elsewhere).
-pub(crate) fn cpu_model() -> String {
+fn cpu_model() -> String {
     std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {
@@ -20,6 +20,14 @@ pub(crate) fn cpu_model() -> String {
                 .map(|m| m.trim().to_string())
         })
         .unwrap_or_else(|| "unknown".into())
+}
+
+/// The machine a run was measured on: its CPU model and core count.
+pub(crate) fn machine() -> serde_json::Value {
+    json!({
+        "cpu": cpu_model(),
+        "cores": std::thread::available_parallelism().map_or(1, |n| n.get()),
+    })
 }
 
 /// The short hash of the source tree's commit, when git can tell.
@@ -43,10 +51,7 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
         "command": config.command,
         "version": env!("CARGO_PKG_VERSION"),
         "git_hash": git_hash(),
-        "machine": {
-            "cpu": cpu_model(),
-            "cores": std::thread::available_parallelism().map_or(1, |n| n.get()),
-        },
+        "machine": machine(),
         "settings": {
             "scene": config.scene.as_ref().map_or("builtin".to_string(), |p| p.display().to_string()),
             "preset": config.preset.map(|p| p.name()),

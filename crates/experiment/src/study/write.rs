@@ -20,7 +20,7 @@ use serde_json::json;
 
 use super::summary::METRICS;
 use super::{StudyConfig, StudyResults};
-use crate::report::json::{cpu_model, git_hash};
+use crate::report::json::{git_hash, machine};
 
 /// Writes `study.md`, `study.csv` and `study.json` into `config.out`
 /// (created if needed), each atomically; returns their paths.
@@ -292,10 +292,7 @@ pub fn json_text(config: &StudyConfig, results: &StudyResults) -> Result<String>
         "command": config.command,
         "version": env!("CARGO_PKG_VERSION"),
         "git_hash": git_hash(),
-        "machine": {
-            "cpu": cpu_model(),
-            "cores": std::thread::available_parallelism().map_or(1, |n| n.get()),
-        },
+        "machine": machine(),
         "settings": {
             "scenes": scenes,
             "samplers": config.samplers.iter().map(|s| s.as_str()).collect::<Vec<_>>(),
