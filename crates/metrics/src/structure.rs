@@ -85,8 +85,7 @@ pub fn nyquist_power(
 ) -> Result<NyquistPower> {
     check(values, width, height, cutoff)?;
     let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let variance = values.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / n;
+    let (mean, variance) = mean_variance(values);
     let (hx, lx) = (bins(width, cutoff, true), bins(width, cutoff, false));
     let (hy, ly) = (bins(height, cutoff, true), bins(height, cutoff, false));
     if [&hx, &lx, &hy, &ly].iter().any(|b| b.is_empty()) {
@@ -104,13 +103,7 @@ pub fn nyquist_power(
     // Row transforms at every k_x used: rows[y][j] = Σ_x e(x, y) ω_W^(k_x[j] x).
     let kx: Vec<i64> = hx.iter().chain(&lx).copied().collect();
     let tw_x = twiddles(width, &kx);
-    let rows: Vec<Vec<[f64; 2]>> = values
-        .chunks_exact(width)
-        .map(|row| {
-            let centred: Vec<f64> = row.iter().map(|v| v - mean).collect();
-            tw_x.iter().map(|t| dot(&centred, t)).collect()
-        })
-        .collect();
+    let rows = row_transforms(values, width, mean, &tw_x);
     // power[j][i]: the periodogram at (kx[j], ky[i]) for ky = hy then ly.
     let ky: Vec<i64> = hy.iter().chain(&ly).copied().collect();
     let tw_y = twiddles(height, &ky);
@@ -188,8 +181,7 @@ pub fn spectral_peak(
         )));
     }
     let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let variance = values.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / n;
+    let (mean, variance) = mean_variance(values);
     if variance == 0.0 {
         return Ok(SpectralPeak {
             ratio: 0.0,
@@ -199,13 +191,7 @@ pub fn spectral_peak(
     let all = |m: usize| -> Vec<i64> { (-(m as i64 / 2)..m as i64 - m as i64 / 2).collect() };
     let (kx, ky) = (all(width), all(height));
     let tw_x = twiddles(width, &kx);
-    let rows: Vec<Vec<[f64; 2]>> = values
-        .chunks_exact(width)
-        .map(|row| {
-            let centred: Vec<f64> = row.iter().map(|v| v - mean).collect();
-            tw_x.iter().map(|t| dot(&centred, t)).collect()
-        })
-        .collect();
+    let rows = row_transforms(values, width, mean, &tw_x);
     let tw_y = twiddles(height, &ky);
     let cells = (1.0 / cell).ceil() as usize;
     let index = |f: f64| (((f + 0.5) / cell).floor() as usize).min(cells - 1);
@@ -303,6 +289,32 @@ fn twiddles(n: usize, ks: &[i64]) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// `Σ v_t w_t` for real `v` and complex `w`.
+/// The mean and the (population) variance of `values`.
+fn mean_variance(values: &[f64]) -> (f64, f64) {
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let variance = values.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / n;
+    (mean, variance)
+}
+
+/// Each row's discrete Fourier transform at the frequencies of `tw_x`
+/// (from [`twiddles`]), after removing `mean`: `rows[y][j] = Σ_x (e(x, y)
+/// - mean) ω^(k_j x)` over the `width`-wide rows of `values`.
+fn row_transforms(
+    values: &[f64],
+    width: usize,
+    mean: f64,
+    tw_x: &[Vec<[f64; 2]>],
+) -> Vec<Vec<[f64; 2]>> {
+    values
+        .chunks_exact(width)
+        .map(|row| {
+            let centred: Vec<f64> = row.iter().map(|v| v - mean).collect();
+            tw_x.iter().map(|t| dot(&centred, t)).collect()
+        })
+        .collect()
+}
+
 fn dot(v: &[f64], w: &[[f64; 2]]) -> [f64; 2] {
     v.iter()
         .zip(w)
