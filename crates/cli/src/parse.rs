@@ -69,6 +69,16 @@ pub fn dim_range(text: &str) -> Result<Range<u32>> {
     half_open(text, "--dim-range", "2..4")
 }
 
+/// The dimensions of `--dim-range A..B`, else `0..D` for `--dims D`
+/// (at least 1; 2 when neither is given).
+pub fn dims(range: Option<&str>, count: Option<u32>) -> Result<Range<u32>> {
+    match (range, count) {
+        (Some(range), _) => dim_range(range),
+        (None, Some(0)) => bail!("--dims must be at least 1"),
+        (None, d) => Ok(0..d.unwrap_or(2)),
+    }
+}
+
 /// `A..B`: the sample indices `A` up to but excluding `B`, with `A < B`
 /// (whether `B` is within the samples per pixel is checked with the
 /// render's options).

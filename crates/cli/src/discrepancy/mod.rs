@@ -128,11 +128,7 @@ impl DiscrepancyArgs {
                 if n == 0 {
                     bail!("--n must be at least 1");
                 }
-                let dims = match (&self.dim_range, self.dims) {
-                    (Some(range), _) => parse::dim_range(range)?,
-                    (None, Some(0)) => bail!("--dims must be at least 1"),
-                    (None, d) => 0..d.unwrap_or(2),
-                };
+                let dims = parse::dims(self.dim_range.as_deref(), self.dims)?;
                 Source::Sampler { config, n, dims }
             }
             (None, None) => bail!("give --sampler NAME or --input FILE"),
