@@ -175,6 +175,24 @@ pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
     }
 }
 
+/// The results of a run of `samplers` whose references took 1 s and were
+/// not cached, with no threshold sweep, for tests.
+#[cfg(test)]
+pub(crate) fn results(samplers: Vec<SamplerResult>) -> Results {
+    let reference = ReferenceInfo {
+        file: "ref.pfm".into(),
+        cached: false,
+        time_s: 1.0,
+    };
+    Results {
+        samplers,
+        reference: reference.clone(),
+        convergence_reference: reference,
+        threshold_sweep: Vec::new(),
+        kept_fraction: 1.0,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

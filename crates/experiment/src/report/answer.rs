@@ -262,23 +262,8 @@ a ratio whose interval excludes 1.\n\n",
 mod tests {
     use super::*;
     use crate::results::MetricStats;
-    use crate::results::{ReferenceInfo, result};
+    use crate::results::{result, results};
     use crate::stats::{Summary, paired_ratio};
-
-    fn results(samplers: Vec<SamplerResult>) -> Results {
-        let reference = ReferenceInfo {
-            file: "ref.pfm".into(),
-            cached: false,
-            time_s: 1.0,
-        };
-        Results {
-            samplers,
-            reference: reference.clone(),
-            convergence_reference: reference,
-            threshold_sweep: Vec::new(),
-            kept_fraction: 1.0,
-        }
-    }
 
     /// A sampler whose per-seed relMSE is `values` against the baseline's `base`.
     fn paired(name: &str, values: &[f64], base: &[f64]) -> SamplerResult {

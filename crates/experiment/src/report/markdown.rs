@@ -243,22 +243,7 @@ the other metric summaries are `{mean, sd}`.\n");
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::results::{ReferenceInfo, result};
-
-    fn results(samplers: Vec<SamplerResult>) -> Results {
-        let reference = ReferenceInfo {
-            file: "ref.pfm".into(),
-            cached: false,
-            time_s: 1.0,
-        };
-        Results {
-            samplers,
-            reference: reference.clone(),
-            convergence_reference: reference,
-            threshold_sweep: Vec::new(),
-            kept_fraction: 1.0,
-        }
-    }
+    use crate::results::{result, results};
 
     #[test]
     fn identical_runs_are_named_only_when_there_are_some() {
