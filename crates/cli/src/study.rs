@@ -69,7 +69,8 @@ pub struct StudyArgs {
     #[arg(long)]
     approximate: bool,
     /// Samplers (comma-separated catalog names, or `all`).
-    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS)]
+    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS,
+          long_help = crate::sampler_help::sampler_list("Samplers (comma-separated, or `all`), of:", ""))]
     samplers: Vec<String>,
     /// The samplers the ratios are relative to (comma-separated; the first
     /// is the main tables' baseline).
