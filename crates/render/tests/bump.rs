@@ -275,3 +275,45 @@ fn prims_of_the_quad_are_triangles() {
             .all(|p| matches!(p, Prim::Triangle { .. }))
     );
 }
+
+#[test]
+fn a_mix_applies_the_bump_map_of_the_material_it_chooses() {
+    let dir = temp_dir("mix");
+    let ramp: Vec<[f32; 3]> = (0..8).map(|i| [(i % 4) as f32 / 3.0; 3]).collect();
+    let image = RgbImage::from_pixels(8, 1, ramp).unwrap();
+    lowdisc_image::write_pfm(dir.join("ridges.pfm"), &image).unwrap();
+    // An amount of 0 from an image, so that the loader keeps the mix (a
+    // constant 0 would be the first material itself).
+    let zeros = RgbImage::from_pixels(2, 1, vec![[0.0; 3]; 2]).unwrap();
+    lowdisc_image::write_pfm(dir.join("zeros.pfm"), &zeros).unwrap();
+    let flat_only = "Texture \"zero\" \"float\" \"imagemap\" \"string filename\" \"zeros.pfm\"\n\
+                     MakeNamedMaterial \"flat\" \"string type\" \"diffuse\"";
+    let with_bumped = format!(
+        "Texture \"ridges\" \"float\" \"imagemap\" \"string filename\" \"ridges.pfm\" \
+         \"float scale\" 0.05\n\
+         MakeNamedMaterial \"bumped\" \"string type\" \"diffuse\" \
+         \"texture displacement\" \"ridges\"\n{flat_only}"
+    );
+    let bumped = load(&dir, &plane_scene(&with_bumped, "NamedMaterial \"bumped\""));
+    // Amount 0 always chooses the first material, the bumped one.
+    let mix =
+        "Material \"mix\" \"string materials\" [\"bumped\" \"flat\"] \"texture amount\" \"zero\"";
+    let mixed = load(&dir, &plane_scene(&with_bumped, mix));
+    let plain =
+        "Material \"mix\" \"string materials\" [\"flat\" \"flat\"] \"texture amount\" \"zero\"";
+    let unbumped = load(&dir, &plane_scene(flat_only, plain));
+    let flat = load(&dir, &plane_scene(flat_only, "NamedMaterial \"flat\""));
+    std::fs::remove_dir_all(&dir).ok();
+    let is_mix = |l: &LoadedScene| {
+        l.scene
+            .materials()
+            .iter()
+            .any(|m| matches!(m, Material::Mix(_)))
+    };
+    assert!(is_mix(&mixed) && is_mix(&unbumped));
+    assert!(mixed.scene.materials().iter().any(Material::has_bump));
+    assert!(!unbumped.scene.materials().iter().any(Material::has_bump));
+    assert_eq!(render_pixels(&mixed), render_pixels(&bumped));
+    assert_eq!(render_pixels(&unbumped), render_pixels(&flat));
+    assert_ne!(render_pixels(&mixed), render_pixels(&flat));
+}

@@ -329,8 +329,22 @@ impl Material {
     pub fn bump(&self, ctx: &BsdfContext) -> Option<&Bump> {
         match self {
             Material::Bumped(b) => Some(&b.bump),
-            Material::Mix(m) => m.choose(ctx).bump(ctx),
+            // The choice evaluates the amount texture and a hash: only
+            // worth it when a side has a map.
+            Material::Mix(m) if m.materials.iter().any(Material::has_bump) => {
+                m.choose(ctx).bump(ctx)
+            }
             _ => None,
+        }
+    }
+
+    /// True when the material, or a material a mix may choose, has a bump
+    /// or normal map.
+    pub fn has_bump(&self) -> bool {
+        match self {
+            Material::Bumped(_) => true,
+            Material::Mix(m) => m.materials.iter().any(Material::has_bump),
+            _ => false,
         }
     }
 
