@@ -37,6 +37,14 @@ pub enum Error {
         /// Width and height of the image.
         resolution: [u32; 2],
     },
+    /// A sampler this build of the crate does not include (a feature is
+    /// off).
+    Unavailable {
+        /// The sampler.
+        sampler: &'static str,
+        /// What the build lacks.
+        reason: &'static str,
+    },
     /// A sampler name that is not known.
     UnknownSampler {
         /// The name given.
@@ -74,6 +82,9 @@ impl fmt::Display for Error {
                 "pixel ({}, {}) is outside the {}x{} image",
                 pixel[0], pixel[1], resolution[0], resolution[1]
             ),
+            Error::Unavailable { sampler, reason } => {
+                write!(f, "sampler `{sampler}` is unavailable: {reason}")
+            }
             Error::UnknownSampler { name, suggestion } => {
                 write!(f, "unknown sampler `{name}`")?;
                 match suggestion {

@@ -25,7 +25,7 @@ fn names_round_trip_and_are_distinct() {
         assert!(!n.description().is_empty());
         assert!(names[..i].iter().all(|m| *m != names[i]));
     }
-    assert_eq!(names.len(), 23);
+    assert_eq!(names.len(), 29);
     assert_eq!("sobol-fast-owen".parse(), Ok(SamplerName::SobolFastOwen));
     assert_eq!(
         "Sobol".parse::<SamplerName>(),
@@ -149,6 +149,30 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     (
         SamplerName::CascadedSobol,
         [0.08929324, 0.20743561, 0.3618505, 0.5417431, 0.2609762],
+    ),
+    (
+        SamplerName::OpenQmcSobol,
+        [0.34016734, 0.92545575, 0.06468725, 0.7411777, 0.5323781],
+    ),
+    (
+        SamplerName::OpenQmcSobolBn,
+        [0.29258716, 0.47288275, 0.31400126, 0.959523, 0.46046543],
+    ),
+    (
+        SamplerName::OpenQmcLattice,
+        [0.8114922, 0.7659483, 0.89876115, 0.62023693, 0.41507912],
+    ),
+    (
+        SamplerName::OpenQmcLatticeBn,
+        [0.3313058, 0.81130135, 0.44125557, 0.7684201, 0.2929374],
+    ),
+    (
+        SamplerName::OpenQmcPmj,
+        [0.36056292, 0.23409837, 0.6898367, 0.12251538, 0.24184275],
+    ),
+    (
+        SamplerName::OpenQmcPmjBn,
+        [0.59260184, 0.32382196, 0.68620837, 0.34868312, 0.20138162],
     ),
 ];
 

@@ -14,9 +14,9 @@ use super::params::Params;
 use crate::halton::HaltonRandomize;
 use crate::pixel::{
     BurleySampler, CascadedSobolSampler, Dims, GlobalSobolMode, GlobalSobolSampler, GroupLayout,
-    HaltonSampler, IndependentSampler, NestedHash, PaddedSobolSampler, PixelSampler,
-    PixelXorSampler, PmjSampler, StratifiedSampler, ZOrderSzSampler, ZSobolJointSampler,
-    ZSobolSampler,
+    HaltonSampler, IndependentSampler, NestedHash, OpenQmcKind, OpenQmcSampler, PaddedSobolSampler,
+    PixelSampler, PixelXorSampler, PmjSampler, StratifiedSampler, ZOrderSzSampler,
+    ZSobolJointSampler, ZSobolSampler,
 };
 use crate::pmj::PmjKind;
 use crate::{Error, RandomizeStrategy};
@@ -139,5 +139,26 @@ sampler_table! {
         CascadedSobol "cascaded-sobol", Family::PerPixel,
             "Cascaded Sobol' (Paulin et al. 2021) per pixel: consecutive dimension pairs (0,2)",
             |p| CascadedSobolSampler::new(p.spp, FastOwen, p.seed);
+    }
+    /// The ASWF OpenQMC library's samplers, padded by call.
+    words OpenQmc(OpenQmcSampler) {
+        OpenQmcSobol "openqmc-sobol", Family::PerPixel,
+            "OpenQMC (ASWF) Owen-scrambled Sobol, one domain per call",
+            |p| OpenQmcSampler::new(OpenQmcKind::Sobol, p.spp, p.seed);
+        OpenQmcSobolBn "openqmc-sobol-bn", Family::PerPixel,
+            "OpenQMC (ASWF) Sobol with blue-noise pixel tables, one domain per call",
+            |p| OpenQmcSampler::new(OpenQmcKind::SobolBn, p.spp, p.seed);
+        OpenQmcLattice "openqmc-lattice", Family::PerPixel,
+            "OpenQMC (ASWF) randomised rank-1 lattice, one domain per call",
+            |p| OpenQmcSampler::new(OpenQmcKind::Lattice, p.spp, p.seed);
+        OpenQmcLatticeBn "openqmc-lattice-bn", Family::PerPixel,
+            "OpenQMC (ASWF) rank-1 lattice with blue-noise pixel tables, one domain per call",
+            |p| OpenQmcSampler::new(OpenQmcKind::LatticeBn, p.spp, p.seed);
+        OpenQmcPmj "openqmc-pmj", Family::PerPixel,
+            "OpenQMC (ASWF) progressive multi-jittered (0,2), one domain per call",
+            |p| OpenQmcSampler::new(OpenQmcKind::Pmj, p.spp, p.seed);
+        OpenQmcPmjBn "openqmc-pmj-bn", Family::PerPixel,
+            "OpenQMC (ASWF) progressive multi-jittered (0,2) with blue-noise pixel tables",
+            |p| OpenQmcSampler::new(OpenQmcKind::PmjBn, p.spp, p.seed);
     }
 }

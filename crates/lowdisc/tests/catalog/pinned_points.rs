@@ -168,6 +168,48 @@ const PINNED_POINTS: &[(SamplerName, [u32; 12])] = &[
             0x3ccaed6a, 0xb1a1088a, 0x97963bef, 0x5050a3c3, 0x41d6537d,
         ],
     ),
+    (
+        SamplerName::OpenQmcSobol,
+        [
+            0x26db7bd2, 0xdcd0437e, 0x0a9000fa, 0x82e15d75, 0x5d1cf27f, 0xd83a117b, 0xc59bde08,
+            0x92998c85, 0x61080b7b, 0x7bb2a5c8, 0x1198edc0, 0x919ad6bb,
+        ],
+    ),
+    (
+        SamplerName::OpenQmcSobolBn,
+        [
+            0x69f6814a, 0xc4904057, 0x12befbd7, 0xc2c97bd8, 0x78e367a6, 0xdedfaf68, 0x8dd434ac,
+            0x9cd887b7, 0xa556a6bf, 0x3ae605f6, 0x38a0a0d7, 0x4b3b9194,
+        ],
+    ),
+    (
+        SamplerName::OpenQmcLattice,
+        [
+            0x39bdbfc3, 0x9f16e0ee, 0x3d92750a, 0xb9bdbfc3, 0x1f16e0ee, 0xbd92750a, 0xf9bdbfc3,
+            0x5f16e0ee, 0x7d92750a, 0x79bdbfc3, 0xdf16e0ee, 0xfd92750a,
+        ],
+    ),
+    (
+        SamplerName::OpenQmcLatticeBn,
+        [
+            0x6533cdef, 0x7e412a96, 0x91f52892, 0xe533cdef, 0xfe412a96, 0x11f52892, 0x2533cdef,
+            0x3e412a96, 0x51f52892, 0xa533cdef, 0xbe412a96, 0xd1f52892,
+        ],
+    ),
+    (
+        SamplerName::OpenQmcPmj,
+        [
+            0xa7fefc6a, 0xcfd40fd9, 0xd593495e, 0x4d1ca84b, 0x4cf277fa, 0x25a43dd9, 0x1a156b99,
+            0x9cd60b05, 0x778e7227, 0xe971a98a, 0x224a6cba, 0x9d62dbfa,
+        ],
+    ),
+    (
+        SamplerName::OpenQmcPmjBn,
+        [
+            0xb53825dc, 0x86bda1fc, 0x27406967, 0x416e9b94, 0x3b79f641, 0xcd48e9c5, 0xfcd678e3,
+            0x559d885c, 0x6fb75076, 0x16817508, 0xd52c0699, 0x9f119dca,
+        ],
+    ),
 ];
 
 #[test]
