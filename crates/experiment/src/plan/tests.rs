@@ -74,11 +74,14 @@ fn the_units_come_in_the_order_of_the_one_machine_run() {
     assert_eq!(w[28], "reference convergence");
     assert_eq!(w[29], "convergence sobol 1 spp");
     assert_eq!(w[36], "convergence halton 8 spp");
-    let sweep = plan.units[10].options(&plan.config);
+    let sweep = plan.units[10].options(&plan.config).unwrap();
     assert_eq!(sweep.sampler.name, SamplerName::PaperRepro);
     assert_eq!(sweep.sampler.threshold, 0.1);
     assert_eq!(plan.units[28].resolution(&plan.config), [5, 5]);
-    assert_eq!(plan.units[28].options(&plan.config).sampler.spp, 32);
+    assert_eq!(
+        plan.units[28].options(&plan.config).unwrap().sampler.spp,
+        32
+    );
 }
 
 #[test]
@@ -183,7 +186,7 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
     );
     let last = &plan.units[conv_at + 9];
     assert_eq!(
-        last.options(&c).sample_range(),
+        last.options(&c).unwrap().sample_range(),
         SampleRange::new(4096, 8192)
     );
     assert_eq!(last.samples(&c), 128 * 8 * 4096);
