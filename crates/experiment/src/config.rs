@@ -1,12 +1,20 @@
 //! The settings of one experiment ([`ExperimentConfig`]), the fixed choices
 //! of the reference render, and the checks that every setting is in range.
+//!
+//! The render settings every render of the experiment shares (threshold,
+//! depth, threads, spectral mode) are the renderer's one settings type:
+//! [`ExperimentConfig::settings`] is their [`SettingsLayer`], each value
+//! named by its flag, and [`ExperimentConfig::render_options`] resolves it
+//! with one render's own layer (sampler, seed, spp, ...) through
+//! [`Settings::resolve`], where the defaults and the ranges are declared.
 
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use lowdisc::catalog::SamplerName;
 use lowdisc_render::preset::ScenePreset;
-use lowdisc_render::settings::ranges;
+use lowdisc_render::render::RenderOptions;
+use lowdisc_render::settings::{Given, Settings, SettingsLayer, ranges};
 
 /// The seed of the reference render.
 pub const REF_SEED: u64 = 0x0005_EED0_F2EF;
@@ -86,6 +94,25 @@ impl ExperimentConfig {
         })
     }
 
+    /// The render settings every render of the experiment shares, each
+    /// named by its flag.
+    pub fn settings(&self) -> SettingsLayer {
+        SettingsLayer {
+            threshold: Some(Given::new(self.threshold, "--threshold")),
+            max_depth: Some(Given::new(self.max_depth, "--maxdepth")),
+            threads: Given::maybe(self.threads, "--threads"),
+            spectral: Some(Given::new(self.spectral, "--spectral")),
+            ..SettingsLayer::default()
+        }
+    }
+
+    /// The render options of one render: [`ExperimentConfig::settings`],
+    /// then `render`'s own settings (its sampler, seed, spp, ...), resolved
+    /// by [`Settings::resolve`]; an error names the setting's source.
+    pub fn render_options(&self, render: &SettingsLayer) -> Result<RenderOptions> {
+        Ok(Settings::resolve(&[&self.settings(), render])?.render)
+    }
+
     /// Checks that every setting is in range and that the scene and
     /// environment map files exist; the messages name the command-line
     /// options.
@@ -129,11 +156,7 @@ impl ExperimentConfig {
         if conv_ref_spp == 0 || conv_ref_spp > 1 << 20 {
             bail!("--conv-ref-spp must be between 1 and 1048576, got {conv_ref_spp}");
         }
-        named("--threshold", ranges::threshold(self.threshold))?;
-        named("--maxdepth", ranges::max_depth(self.max_depth))?;
-        if let Some(t) = self.threads {
-            named("--threads", ranges::threads(t))?;
-        }
+        Settings::resolve(&[&self.settings()])?;
         if let Some(n) = self.unit_samples {
             if n < MIN_UNIT_SAMPLES {
                 bail!("--unit-samples must be at least {MIN_UNIT_SAMPLES}, got {n}");

@@ -11,10 +11,11 @@ use std::time::Instant;
 
 use anyhow::Result;
 use lowdisc_render::render::{NoProgress, render};
+use lowdisc_render::settings::{Given, SettingsLayer};
 
 use crate::config::{ExperimentConfig, REF_SAMPLER};
 use crate::progress::Estimate;
-use crate::subject::{Subject, options};
+use crate::subject::Subject;
 
 /// Samples per pixel of the calibration render. At 1 spp the start of the
 /// worker threads and the first touches of the scene weigh so much that the
@@ -27,13 +28,15 @@ pub const CALIBRATION_SPP: u32 = 4;
 /// `samples` samples from its speed.
 pub fn calibrate(config: &ExperimentConfig, subject: &Subject, samples: u64) -> Result<Estimate> {
     let view = subject.view_at(config.resolution)?;
+    let from = "the calibration render";
+    let options = config.render_options(&SettingsLayer {
+        sampler: Some(Given::new(REF_SAMPLER, from)),
+        seed: Some(Given::new(0, from)),
+        spp: Some(Given::new(CALIBRATION_SPP, from)),
+        ..SettingsLayer::default()
+    })?;
     let start = Instant::now();
-    let out = render(
-        &subject.scene,
-        &view,
-        &options(config, REF_SAMPLER, 0, CALIBRATION_SPP),
-        &NoProgress,
-    )?;
+    let out = render(&subject.scene, &view, &options, &NoProgress)?;
     let seconds = start.elapsed().as_secs_f64().max(1e-6);
     let samples_per_second = out.stats.samples as f64 / seconds;
     Ok(Estimate {

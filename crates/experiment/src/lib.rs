@@ -7,10 +7,11 @@
 //! [`run()`] with an [`ExperimentConfig`] and a [`Progress`] observer.
 //!
 //! Modules, in the order a run uses them:
-//! - [`config`]: the validated settings of one experiment;
+//! - [`config`]: the validated settings of one experiment, and the render
+//!   options of one of its renders (through the renderer's one settings
+//!   type);
 //! - [`scene`]: the built-in scene and its procedural sky;
-//! - [`subject`]: the scene to render with its view, loaded and hashed, and
-//!   the render options of one render;
+//! - [`subject`]: the scene to render with its view, loaded and hashed;
 //! - [`plan`]: the experiment as independent units (one render each) and
 //!   `plan.json`;
 //! - [`cut`]: a large render cut into pieces (bands x sample ranges) and

@@ -1,13 +1,10 @@
-//! What the experiment renders and how: the scene and its view
-//! ([`Subject`], loaded with the hash of its content by [`load`]) and the
-//! render options of one of its renders ([`options`]).
+//! What the experiment renders: the scene and its view ([`Subject`],
+//! loaded with the hash of its content by [`load`]). How it renders them is
+//! the configuration's ([`crate::config::ExperimentConfig::render_options`]).
 
 use anyhow::{Context, Result};
-use lowdisc::catalog::{SamplerConfig, SamplerName};
 use lowdisc_image::{ImageFormat, ReadOptions, decode_image};
-use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
-use lowdisc_render::render::RenderOptions;
 use lowdisc_render::scene::Scene;
 use lowdisc_render::view::{View, ViewSpec};
 
@@ -84,28 +81,4 @@ pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result
         }
     };
     Ok((Subject { scene, view }, hash))
-}
-
-/// The render options of one render of the experiment.
-pub fn options(
-    config: &ExperimentConfig,
-    sampler: SamplerName,
-    seed: u64,
-    spp: u32,
-) -> RenderOptions {
-    RenderOptions {
-        sampler: SamplerConfig {
-            seed,
-            spp,
-            threshold: config.threshold,
-            ..SamplerConfig::new(sampler)
-        },
-        integrator: PathIntegrator {
-            max_depth: config.max_depth,
-            ..PathIntegrator::default()
-        },
-        threads: config.threads,
-        spectral: config.spectral,
-        ..RenderOptions::default()
-    }
 }

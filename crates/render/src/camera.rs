@@ -16,6 +16,7 @@
 //!   the concentric disk map and focuses at camera-space depth
 //!   `z = focaldistance`.
 
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::filter::Filter;
 use crate::math::sampling::sample_uniform_disk_concentric;
 use crate::math::{Point2, Point3, Ray, Transform, Vec3};
@@ -297,5 +298,19 @@ impl PerspectiveCamera {
     pub fn focus_point(&self, p: [f32; 2]) -> Point3 {
         self.world_from_camera
             .point(self.camera_from_raster(p) * self.focal_distance)
+    }
+}
+
+impl ContentHash for PerspectiveParams {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let PerspectiveParams {
+            fov,
+            lens_radius,
+            focal_distance,
+            frame_aspect_ratio,
+            screen_window,
+        } = self;
+        (fov, lens_radius, focal_distance).feed(sink);
+        (frame_aspect_ratio, screen_window).feed(sink);
     }
 }

@@ -21,7 +21,7 @@
 //! | rendering | [`render`] (tiles, threads, progress; one camera sample), [`integrator`] (path tracer, sampler-dimension layout), [`camera`] (perspective camera), [`film`] (pixel sums, tiles, output), [`filter`] (pixel filters and their sampling) |
 //! | appearance | [`bsdf`] (BxDFs, materials, `mix`), [`texture`] (one generic texture, image maps, registry), [`light`] (point, spot, distant, area, infinite and image lights; light selection), [`spectrum`] (the `Colour` trait: RGB, or four sampled wavelengths with uplift, named spectra and the film's sensor) |
 //! | geometry | [`geometry`] (triangles, spheres, disks, bilinear patches, Loop subdivision), [`accel`] (shapes plus BVH, full hits), [`bvh`] (binned-SAH build, traversal), [`mesh`] (PLY files) |
-//! | foundations | [`math`] (vectors, rays, boxes, transforms, frames), [`sampling`] (tabulated 1-D/2-D distributions), [`error`] (the crate's errors) |
+//! | foundations | [`math`] (vectors, rays, boxes, transforms, frames), [`sampling`] (tabulated 1-D/2-D distributions), [`content_hash`] (the explicit serialisation content hashes are taken over), [`error`] (the crate's errors) |
 //!
 //! **Determinism.** Every random decision comes from the pixel sampler (or a
 //! seeded hash), tiles get their own sampler streams and are merged in order,
@@ -34,6 +34,7 @@ pub mod accel;
 pub mod bsdf;
 pub mod bvh;
 pub mod camera;
+pub mod content_hash;
 pub mod cornell;
 pub mod error;
 pub mod film;

@@ -20,6 +20,7 @@
 //! ```
 
 use crate::camera::{PerspectiveCamera, PerspectiveParams};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::error::RenderError;
 use crate::film::{Film, FilmParams, PixelBounds};
 use crate::filter::Filter;
@@ -149,5 +150,34 @@ impl View {
     /// The pixels the film stores (its crop), checked.
     pub fn pixel_bounds(&self) -> PixelBounds {
         self.bounds
+    }
+}
+
+impl ContentHash for CameraSpec {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let CameraSpec {
+            world_from_camera,
+            params,
+        } = self;
+        (world_from_camera, params).feed(sink);
+    }
+}
+
+/// What of a view changes pixels besides the settings: the camera and the
+/// pixel filter. The film's parameters are render settings and the
+/// resolution and crop are recorded by whoever hashes the view (a split
+/// part records them); the exposure only scales 8-bit output; where the
+/// camera and film were given names no content.
+impl ContentHash for ViewSpec {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let ViewSpec {
+            camera,
+            film: _,
+            filter,
+            exposure: _,
+            camera_at: _,
+            film_at: _,
+        } = self;
+        (camera, filter).feed(sink);
     }
 }

@@ -31,4 +31,4 @@ pub use file::{
 };
 pub use lowdisc_render::film::PixelSum;
 pub use merge::{MergeError, NamedPart, merge};
-pub use part::{PartInfo, RenderPart, SCENE_HASH_VERSION, scene_hash, settings};
+pub use part::{PartInfo, RenderPart, SCENE_HASH_VERSION, content_digest, scene_hash, settings};

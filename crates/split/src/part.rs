@@ -4,6 +4,7 @@
 
 use lowdisc::catalog::SamplerConfig;
 use lowdisc_image::{ImageError, RgbImage};
+use lowdisc_render::content_hash::{ContentHash, ContentSink};
 use lowdisc_render::film::{FilmParams, PixelBounds, PixelSum};
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::render::{RenderOptions, RenderOutput, SampleRange};
@@ -172,37 +173,63 @@ pub fn settings(opts: &RenderOptions, film: &FilmParams) -> BTreeMap<String, Str
     .collect()
 }
 
-/// The first line of what [`scene_hash`] hashes, raised whenever what it
-/// covers changes.
-pub const SCENE_HASH_VERSION: &str = "lowdisc scene hash 2: scene content, camera, filter";
+/// The version of what [`scene_hash`] hashes, its first bytes: raised
+/// whenever what is fed changes, so that parts hashed by another version
+/// never merge with this version's.
+pub const SCENE_HASH_VERSION: &str =
+    "lowdisc scene hash 3: explicit serialisation of the scene, camera and filter";
 
 /// The SHA-256 (hexadecimal) of the parsed scene and of how the view sees
-/// it: [`Scene::write_content`] (every shape, material, light) and the
-/// view's camera and pixel filter, streamed through the hasher, never held
+/// it: the scene's [`ContentHash`] (every shape, material, light) and the
+/// view's ([`lowdisc_render::view::ViewSpec`]: camera and pixel filter),
+/// after [`SCENE_HASH_VERSION`], streamed through the hasher, never held
 /// in memory. The film's parameters are settings ([`settings`]) and
 /// [`PartInfo`] fields. It names what is rendered, not where it was read
 /// from, so parts rendered from copies of a scene in different folders
 /// agree.
 pub fn scene_hash(scene: &Scene, view: &View) -> String {
-    let mut sink = HashSink(Sha256::new());
-    // The version of what is hashed: parts of another version never merge.
-    let _ = writeln!(sink, "{SCENE_HASH_VERSION}");
-    // The sink never fails, and `Debug` of the scene's data never fails.
-    let _ = scene.write_content(&mut sink);
-    let _ = write!(sink, "\n{:?}\n{:?}", view.spec().camera, view.filter());
-    let digest = sink.0.finalize();
+    content_digest(SCENE_HASH_VERSION, &(scene, view.spec()))
+}
+
+/// The SHA-256 (hexadecimal) of `version` (its length and bytes) and
+/// `content`'s [`ContentHash`]: [`scene_hash`] at a given version.
+pub fn content_digest(version: &str, content: &impl ContentHash) -> String {
+    let mut sink = HashSink {
+        hasher: Sha256::new(),
+        buffer: Vec::with_capacity(HashSink::CAPACITY),
+    };
+    version.feed(&mut sink);
+    content.feed(&mut sink);
+    let digest = sink.finish();
     digest.iter().fold(String::with_capacity(64), |mut s, b| {
         let _ = write!(s, "{b:02x}");
         s
     })
 }
 
-/// A `fmt::Write` that feeds a hasher.
-struct HashSink(Sha256);
+/// A [`ContentSink`] that feeds a SHA-256 hasher in blocks (the content
+/// comes a few bytes at a time: a mesh is millions of floats).
+struct HashSink {
+    hasher: Sha256,
+    buffer: Vec<u8>,
+}
 
-impl std::fmt::Write for HashSink {
-    fn write_str(&mut self, s: &str) -> std::fmt::Result {
-        self.0.update(s.as_bytes());
-        Ok(())
+impl HashSink {
+    const CAPACITY: usize = 1 << 16;
+
+    fn finish(mut self) -> Vec<u8> {
+        self.hasher.update(&self.buffer);
+        self.hasher.finalize().to_vec()
+    }
+}
+
+impl ContentSink for HashSink {
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        if self.buffer.len() + bytes.len() > Self::CAPACITY {
+            self.hasher.update(&self.buffer);
+            self.buffer.clear();
+        }
+        self.buffer.extend_from_slice(bytes);
     }
 }

@@ -248,19 +248,6 @@ fn bad_splits_are_refused_naming_the_part() {
 }
 
 #[test]
-fn the_scene_hash_is_stable_and_tells_scenes_apart() {
-    let hash = |(scene, view): (Scene, View)| lowdisc_split::scene_hash(&scene, &view);
-    let a = hash(scene());
-    assert_eq!(a, hash(scene()));
-    assert_eq!(a.len(), 64);
-    // Another camera is another view of the scene, and another hash.
-    let lens = cornell_camera_with_lens(40.0, 1000.0).unwrap();
-    assert_ne!(a, hash(cornell_box_with_camera([24, 16], lens).unwrap()));
-    // The resolution is not content: the part records it.
-    assert_eq!(a, hash(cornell_box([24, 17]).unwrap()));
-}
-
-#[test]
 fn bad_windows_and_ranges_are_refused_before_rendering() {
     let scene = scene();
     let o = opts(SamplerName::ZSobol, 0);

@@ -26,10 +26,10 @@ pub mod file;
 use anyhow::{Result, bail};
 use lowdisc::catalog::SamplerName;
 use lowdisc_render::render::RenderOptions;
+use lowdisc_render::settings::{Given, SettingsLayer};
 
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::cut::{Cut, Piece, cut, sample_range};
-use crate::subject::options;
 use crate::sweep::THRESHOLDS;
 
 /// Which reference a reference unit renders.
@@ -142,33 +142,52 @@ impl Unit {
         }
     }
 
-    /// The render options of its render (a piece's sample range
-    /// included; its window depends on the film, see [`Piece::window`]).
-    pub fn options(&self, config: &ExperimentConfig) -> RenderOptions {
-        let mut o = match self.work {
-            Work::Reference { target, .. } => {
-                let spp = reference_settings(config, target).1;
-                options(config, REF_SAMPLER, REF_SEED, spp)
-            }
-            Work::Run { sampler, seed } => options(config, sampler, seed, config.spp),
-            Work::Sweep { threshold, seed } => {
-                let mut o = options(config, SamplerName::PaperRepro, seed, config.spp);
-                o.sampler.threshold = threshold;
-                o
-            }
-            Work::Convergence { sampler, spp, .. } => options(config, sampler, 0, spp),
+    /// What its render asks for beyond the experiment's own settings
+    /// ([`ExperimentConfig::settings`]): its sampler, seed and spp, a sweep
+    /// render's threshold, a piece's sample range (its window depends on
+    /// the film, see [`Piece::window`]), each named by where it comes from.
+    pub fn settings(&self, config: &ExperimentConfig) -> SettingsLayer {
+        let (sampler, seed, spp) = self.render(config);
+        let threshold = match self.work {
+            Work::Sweep { threshold, .. } => Some(threshold),
+            _ => None,
         };
         let piece = self.work.piece();
-        if piece.cut.ranges > 1 {
-            o.samples = Some(sample_range(o.sampler.spp, piece.range, piece.cut.ranges));
+        let samples =
+            (piece.cut.ranges > 1).then(|| sample_range(spp, piece.range, piece.cut.ranges));
+        let from = format!("unit {} (`{}`)", self.index, self.work.describe());
+        SettingsLayer {
+            sampler: Some(Given::new(sampler, &from)),
+            seed: Some(Given::new(seed, &from)),
+            spp: Some(Given::new(spp, &from)),
+            threshold: Given::maybe(threshold, &from),
+            samples: Given::maybe(samples, &from),
+            ..SettingsLayer::default()
         }
-        o
+    }
+
+    /// The render options of its render: the experiment's settings and
+    /// [`Unit::settings`], resolved ([`ExperimentConfig::render_options`]).
+    pub fn options(&self, config: &ExperimentConfig) -> Result<RenderOptions> {
+        config.render_options(&self.settings(config))
+    }
+
+    /// The sampler, seed and samples per pixel of its render.
+    fn render(&self, config: &ExperimentConfig) -> (SamplerName, u64, u32) {
+        match self.work {
+            Work::Reference { target, .. } => {
+                (REF_SAMPLER, REF_SEED, reference_settings(config, target).1)
+            }
+            Work::Run { sampler, seed } => (sampler, seed, config.spp),
+            Work::Sweep { seed, .. } => (SamplerName::PaperRepro, seed, config.spp),
+            Work::Convergence { sampler, spp, .. } => (sampler, 0, spp),
+        }
     }
 
     /// The camera samples of its render (for a piece of a scene with a
     /// crop window, an upper bound).
     pub fn samples(&self, config: &ExperimentConfig) -> u64 {
-        let spp = self.options(config).sampler.spp;
+        let spp = self.render(config).2;
         self.work.piece().samples(self.resolution(config), spp)
     }
 }

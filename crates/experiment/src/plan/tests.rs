@@ -2,8 +2,9 @@
 
 use std::path::Path;
 
-use lowdisc::catalog::SamplerName;
+use lowdisc::catalog::{SamplerConfig, SamplerName};
 
+use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::render::SampleRange;
 
 use super::file::PlanFile;
@@ -74,11 +75,47 @@ fn the_units_come_in_the_order_of_the_one_machine_run() {
     assert_eq!(w[28], "reference convergence");
     assert_eq!(w[29], "convergence sobol 1 spp");
     assert_eq!(w[36], "convergence halton 8 spp");
-    let sweep = plan.units[10].options(&plan.config);
+    let sweep = plan.units[10].options(&plan.config).unwrap();
     assert_eq!(sweep.sampler.name, SamplerName::PaperRepro);
     assert_eq!(sweep.sampler.threshold, 0.1);
     assert_eq!(plan.units[28].resolution(&plan.config), [5, 5]);
-    assert_eq!(plan.units[28].options(&plan.config).sampler.spp, 32);
+    assert_eq!(
+        plan.units[28].options(&plan.config).unwrap().sampler.spp,
+        32
+    );
+}
+
+/// A unit's options are the experiment's settings and the unit's own,
+/// the defaults filling the rest, and a bad flag is named.
+#[test]
+fn a_units_options_resolve_the_experiments_settings_and_its_own() {
+    let mut c = config();
+    c.threads = Some(2);
+    c.spectral = true;
+    let plan = Plan::new(c.clone(), 0, [false, false]);
+    let expected = RenderOptions {
+        sampler: SamplerConfig {
+            seed: 2,
+            spp: 4,
+            threshold: 0.3,
+            ..SamplerConfig::new(SamplerName::Halton)
+        },
+        integrator: PathIntegrator {
+            max_depth: 5,
+            ..PathIntegrator::default()
+        },
+        threads: Some(2),
+        spectral: true,
+        ..RenderOptions::default()
+    };
+    assert_eq!(plan.units[6].work.describe(), "run halton seed 2");
+    assert_eq!(plan.units[6].options(&c).unwrap(), expected);
+    c.threshold = 7.0;
+    let e = c.validate_ranges().unwrap_err().to_string();
+    assert!(
+        e.contains("--threshold: threshold 7 must lie in [0, 1]"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -183,7 +220,7 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
     );
     let last = &plan.units[conv_at + 9];
     assert_eq!(
-        last.options(&c).sample_range(),
+        last.options(&c).unwrap().sample_range(),
         SampleRange::new(4096, 8192)
     );
     assert_eq!(last.samples(&c), 128 * 8 * 4096);

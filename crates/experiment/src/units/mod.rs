@@ -16,6 +16,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 use lowdisc_render::render::render;
+use lowdisc_render::settings::Given;
 use lowdisc_split::RenderPart;
 
 use crate::config::ExperimentConfig;
@@ -39,7 +40,7 @@ pub fn render_unit(
     stage: &Stage,
 ) -> Result<UnitOutput> {
     let view = subject.view_at(unit.resolution(config))?;
-    let mut options = unit.options(config);
+    let mut settings = unit.settings(config);
     let keeps_sums = unit.work.keeps_sums();
     if keeps_sums {
         let window = unit.work.piece().window(view.pixel_bounds());
@@ -52,8 +53,10 @@ pub fn render_unit(
                 unit.work.describe()
             );
         }
-        options.window = Some(window);
+        let from = format!("unit {}'s band", unit.index);
+        settings.window = Some(Given::new(window, from));
     }
+    let options = config.render_options(&settings)?;
     let out = render(&subject.scene, &view, &options, stage)?;
     stage.finished_render(out.stats.samples);
     let rendered = if keeps_sums {

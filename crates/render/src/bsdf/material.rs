@@ -19,6 +19,7 @@
 //! geometry with [`Material::bump`] before building the BSDF.
 
 pub mod bump;
+mod content_hash;
 mod defaults;
 mod mix;
 mod params;

@@ -18,6 +18,7 @@
 
 pub mod table;
 
+use crate::content_hash::{ContentHash, ContentSink};
 use std::f64::consts::PI;
 use table::FilterTable;
 
@@ -385,5 +386,31 @@ fn sample_tent(u: f32, r: f32) -> f32 {
     } else {
         let v = (2.0 * u - 1.0).min(1.0);
         r * (1.0 - (1.0 - v).sqrt())
+    }
+}
+
+/// The tabulated samplers are derived from the fed parameters.
+impl ContentHash for Filter {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            Filter::Box { radius } => (0u8, radius).feed(sink),
+            Filter::Triangle { radius } => (1u8, radius).feed(sink),
+            Filter::Gaussian {
+                radius,
+                sigma,
+                table: _,
+            } => (2u8, radius, sigma).feed(sink),
+            Filter::Mitchell {
+                radius,
+                b,
+                c,
+                table: _,
+            } => (3u8, radius, b, c).feed(sink),
+            Filter::Lanczos {
+                radius,
+                tau,
+                table: _,
+            } => (4u8, radius, tau).feed(sink),
+        }
     }
 }

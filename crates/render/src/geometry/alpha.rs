@@ -11,6 +11,7 @@
 //! ray spawned at the rejected hit (hashed anew), as pbrt-v4 retraces.
 
 use super::{Prim, PrimHit, ShapeSet};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Ray, spawn_ray};
 use crate::texture::{FloatTexture, TextureEvalContext};
 use lowdisc::hash::hash_words;
@@ -124,5 +125,15 @@ impl ShapeSet {
             t: h.t + far.t,
             ..far
         })
+    }
+}
+
+impl ContentHash for ShapeId {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            ShapeId::Mesh(i) => (0u8, i).feed(sink),
+            ShapeId::Sphere(i) => (1u8, i).feed(sink),
+            ShapeId::Disk(i) => (2u8, i).feed(sink),
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! Disks and annuli in the object-space plane `z = height`, facing `+z`.
 
 use super::{PrimHit, ShadingGeometry, ShapeSample, SurfaceHit};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_disk_concentric;
 use crate::math::{Bounds3, Frame, Point2, Ray, Transform, Vec3};
@@ -162,5 +163,23 @@ impl Disk {
             uv: self.param(x, y).0,
             pdf: 1.0 / self.area,
         })
+    }
+}
+
+/// The inverse transform and the area are derived from the fed fields.
+impl ContentHash for Disk {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Disk {
+            object_to_world,
+            world_to_object: _,
+            height,
+            radius,
+            inner_radius,
+            normal,
+            area: _,
+        } = self;
+        object_to_world.feed(sink);
+        [height, radius, inner_radius].feed(sink);
+        normal.feed(sink);
     }
 }

@@ -3,6 +3,7 @@
 
 use super::alpha::ShapeId;
 use super::{Disk, PrimHit, ShapeSample, Sphere, SurfaceHit, TriangleMesh};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Bounds3, Point2, Ray};
 use crate::texture::FloatTexture;
 use std::collections::BTreeMap;
@@ -24,7 +25,7 @@ pub enum Prim {
 }
 
 /// The scene's shapes, in world space.
-#[derive(Clone, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct ShapeSet {
     /// Triangle meshes.
     pub meshes: Vec<TriangleMesh>,
@@ -34,22 +35,6 @@ pub struct ShapeSet {
     pub disks: Vec<Disk>,
     /// Alpha cut-outs of the shapes that have one (see [`super::alpha`]).
     pub(super) alpha: BTreeMap<ShapeId, FloatTexture>,
-}
-
-/// The derived form, with the alpha cut-outs only when there are some (so
-/// that the text of a scene without any, a content hash's input, is what
-/// it was before cut-outs existed).
-impl std::fmt::Debug for ShapeSet {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let mut d = f.debug_struct("ShapeSet");
-        d.field("meshes", &self.meshes)
-            .field("spheres", &self.spheres)
-            .field("disks", &self.disks);
-        if !self.alpha.is_empty() {
-            d.field("alpha", &self.alpha);
-        }
-        d.finish()
-    }
 }
 
 impl ShapeSet {
@@ -134,6 +119,28 @@ impl ShapeSet {
             Prim::Triangle { mesh, tri } => self.meshes[mesh as usize].sample(tri as usize, u),
             Prim::Sphere(i) => self.spheres[i as usize].sample(u),
             Prim::Disk(i) => self.disks[i as usize].sample(u),
+        }
+    }
+}
+
+impl ContentHash for ShapeSet {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let ShapeSet {
+            meshes,
+            spheres,
+            disks,
+            alpha,
+        } = self;
+        (meshes, spheres, disks, alpha).feed(sink);
+    }
+}
+
+impl ContentHash for Prim {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            Prim::Triangle { mesh, tri } => (0u8, mesh, tri).feed(sink),
+            Prim::Sphere(i) => (1u8, i).feed(sink),
+            Prim::Disk(i) => (2u8, i).feed(sink),
         }
     }
 }

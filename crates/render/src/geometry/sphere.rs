@@ -3,6 +3,7 @@
 //! of directions the sphere subtends, as pbrt-v4's `Sphere::Sample(ctx, u)`.
 
 use super::{PrimHit, ShadingGeometry, ShapeSample, SurfaceHit};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_sphere;
 use crate::math::{Bounds3, Frame, Point2, Point3, Ray, Transform, Vec3};
@@ -278,5 +279,23 @@ impl Sphere {
             uv: self.param(p_obj).0,
             pdf: 1.0 / (2.0 * PI * cone.one_minus_cos_max),
         })
+    }
+}
+
+/// The inverse transform, the area and the world-space sphere are derived
+/// from the fed fields.
+impl ContentHash for Sphere {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Sphere {
+            object_to_world,
+            world_to_object: _,
+            radius,
+            flip,
+            area: _,
+            world: _,
+        } = self;
+        object_to_world.feed(sink);
+        radius.feed(sink);
+        flip.feed(sink);
     }
 }

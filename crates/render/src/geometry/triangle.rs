@@ -7,6 +7,7 @@ mod packet;
 pub use packet::{Hits8, PACKET_LANES, RayLanes, Tri8};
 
 use super::{PrimHit, ShadingGeometry, ShapeSample, SurfaceHit};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::error::Error;
 use crate::math::sampling::sample_uniform_triangle;
 use crate::math::{Bounds3, Frame, Normal3, Point2, Point3, Ray, Transform, Vec3};
@@ -394,5 +395,20 @@ pub fn intersect_triangle(ray: &Ray, t_max: f32, [p0, p1, p2]: [Point3; 3]) -> O
         Some(PrimHit { t, u, v })
     } else {
         None
+    }
+}
+
+impl ContentHash for TriangleMesh {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let TriangleMesh {
+            positions,
+            indices,
+            normals,
+            uvs,
+            reverse_orientation,
+            transform_swaps_handedness,
+        } = self;
+        (positions, indices, normals, uvs).feed(sink);
+        (reverse_orientation, transform_swaps_handedness).feed(sink);
     }
 }

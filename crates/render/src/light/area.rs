@@ -5,6 +5,7 @@
 
 use super::error::{check_rgb, check_scalar};
 use super::{LightError, LightLiSample, LightSampleContext, luminance_normaliser};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::geometry::{Disk, Prim, ShapeSample, ShapeSet, Sphere, intersect_triangle};
 use crate::math::sampling::sample_uniform_triangle;
 use crate::math::{Normal3, Point2, Point3, Ray, Vec3};
@@ -317,4 +318,28 @@ impl DiffuseAreaLight {
 pub fn diffuse_power_scale(l: Rgb, power: f32, total_area: f32, two_sided: bool) -> f32 {
     let k_e = PI * total_area * if two_sided { 2.0 } else { 1.0 };
     luminance_normaliser(l, k_e, Some(power))
+}
+
+impl ContentHash for AreaShape {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            AreaShape::Triangle { p, n } => (0u8, p, n).feed(sink),
+            AreaShape::Sphere(sphere) => (1u8, sphere).feed(sink),
+            AreaShape::Disk(disk) => (2u8, disk).feed(sink),
+        }
+    }
+}
+
+/// The area is derived from the shape.
+impl ContentHash for DiffuseAreaLight {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let DiffuseAreaLight {
+            shape,
+            prim,
+            l,
+            two_sided,
+            area: _,
+        } = self;
+        (shape, prim, l, two_sided).feed(sink);
+    }
 }

@@ -2,6 +2,7 @@
 
 use super::error::{check_rgb, check_scalar};
 use super::{LightError, LightLiSample, LightSampleContext, SceneSphere, luminance_normaliser};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Bounds3, Point3, Transform, Vec3};
 use crate::spectrum::Rgb;
 use std::f32::consts::PI;
@@ -65,5 +66,13 @@ impl DistantLight {
 
     pub(crate) fn phi(&self) -> Rgb {
         self.l * (PI * self.scene.radius * self.scene.radius)
+    }
+}
+
+/// The scene's bounding sphere is derived from the shapes.
+impl ContentHash for DistantLight {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let DistantLight { w, l, scene: _ } = self;
+        (w, l).feed(sink);
     }
 }

@@ -21,6 +21,7 @@
 
 use super::error::check_scalar;
 use super::{LightError, LightLiSample, LightSampleContext, SceneSphere, luminance_normaliser};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::spherical::{
     equal_area_sphere_to_square, equal_area_square_to_sphere, spherical_direction, spherical_phi,
     spherical_theta,
@@ -371,5 +372,44 @@ impl ImageInfiniteLight {
 
     pub(crate) fn phi(&self) -> Rgb {
         self.radiance_integral() * (PI * self.scene.radius * self.scene.radius)
+    }
+}
+
+impl ContentHash for EnvLayout {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let tag: u8 = match self {
+            EnvLayout::EqualArea => 0,
+            EnvLayout::LatLong => 1,
+        };
+        tag.feed(sink);
+    }
+}
+
+impl ContentHash for EnvLookup {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let tag: u8 = match self {
+            EnvLookup::Nearest => 0,
+            EnvLookup::Bilinear => 1,
+        };
+        tag.feed(sink);
+    }
+}
+
+/// The inverse transform and the sampling distribution are derived from
+/// the fed fields, the scene's bounding sphere from the shapes.
+impl ContentHash for ImageInfiniteLight {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let ImageInfiniteLight {
+            light_to_world,
+            world_to_light: _,
+            layout,
+            lookup,
+            width,
+            height,
+            pixels,
+            distribution: _,
+            scene: _,
+        } = self;
+        (light_to_world, layout, lookup, [width, height], pixels).feed(sink);
     }
 }

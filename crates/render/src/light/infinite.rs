@@ -2,6 +2,7 @@
 
 use super::error::{check_rgb, check_scalar};
 use super::{LightError, LightLiSample, LightSampleContext, SceneSphere, luminance_normaliser};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::sampling::sample_uniform_sphere;
 use crate::math::{Bounds3, Point2, Ray, Vec3};
 use crate::spectrum::Rgb;
@@ -59,5 +60,13 @@ impl UniformInfiniteLight {
 
     pub(crate) fn phi(&self) -> Rgb {
         self.l * (4.0 * PI * PI * self.scene.radius * self.scene.radius)
+    }
+}
+
+/// The scene's bounding sphere is derived from the shapes.
+impl ContentHash for UniformInfiniteLight {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let UniformInfiniteLight { l, scene: _ } = self;
+        l.feed(sink);
     }
 }

@@ -44,6 +44,7 @@ pub use point::PointLight;
 pub use sampler::LightSampler;
 pub use spot::SpotLight;
 
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Bounds3, Normal3, Point2, Point3, Ray, Vec3};
 use crate::spectrum::Rgb;
 
@@ -294,4 +295,17 @@ pub(crate) fn smooth_step(x: f32, a: f32, b: f32) -> f32 {
     }
     let t = ((x - a) / (b - a)).clamp(0.0, 1.0);
     t * t * (3.0 - 2.0 * t)
+}
+
+impl ContentHash for Light {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            Light::Point(l) => (0u8, l).feed(sink),
+            Light::Spot(l) => (1u8, l).feed(sink),
+            Light::Distant(l) => (2u8, l).feed(sink),
+            Light::Area(l) => (3u8, l).feed(sink),
+            Light::UniformInfinite(l) => (4u8, l).feed(sink),
+            Light::ImageInfinite(l) => (5u8, l).feed(sink),
+        }
+    }
 }

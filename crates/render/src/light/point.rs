@@ -2,6 +2,7 @@
 
 use super::error::{check_rgb, check_scalar};
 use super::{LightError, LightLiSample, LightSampleContext, luminance_normaliser};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Point3, Transform, Vec3};
 use crate::spectrum::Rgb;
 use std::f32::consts::PI;
@@ -68,5 +69,15 @@ impl PointLight {
 
     pub(crate) fn phi(&self) -> Rgb {
         self.intensity * (4.0 * PI)
+    }
+}
+
+impl ContentHash for PointLight {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let PointLight {
+            position,
+            intensity,
+        } = self;
+        (position, intensity).feed(sink);
     }
 }

@@ -2,6 +2,7 @@
 
 use super::error::{check_rgb, check_scalar};
 use super::{LightError, LightLiSample, LightSampleContext, luminance_normaliser, smooth_step};
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Point3, Transform, Vec3};
 use crate::spectrum::Rgb;
 use std::f32::consts::PI;
@@ -105,4 +106,19 @@ impl SpotLight {
 /// smoothstep ramp counted at half weight (pbrt-v4's closed form).
 fn cone_power_factor(cos_start: f32, cos_end: f32) -> f32 {
     2.0 * PI * ((1.0 - cos_start) + (cos_start - cos_end) / 2.0)
+}
+
+impl ContentHash for SpotLight {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let SpotLight {
+            position,
+            world_to_light,
+            axis,
+            intensity,
+            cos_falloff_start,
+            cos_falloff_end,
+        } = self;
+        (position, world_to_light, axis, intensity).feed(sink);
+        (cos_falloff_start, cos_falloff_end).feed(sink);
+    }
 }

@@ -8,6 +8,7 @@
 use super::bounds::Bounds3;
 use super::ray::Ray;
 use super::vector::{Normal3, Point3, Vec3};
+use crate::content_hash::{ContentHash, ContentSink};
 use std::ops::Mul;
 
 /// A row-major 4x4 matrix.
@@ -313,5 +314,22 @@ impl Mul for Transform {
             m: self.m * o.m,
             m_inv: o.m_inv * self.m_inv,
         }
+    }
+}
+
+impl ContentHash for Matrix4 {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Matrix4 { m } = self;
+        m.feed(sink);
+    }
+}
+
+/// Both matrices: an inverse given with [`Transform::from_parts`] need not
+/// be the one [`Matrix4::inverse`] computes.
+impl ContentHash for Transform {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Transform { m, m_inv } = self;
+        m.feed(sink);
+        m_inv.feed(sink);
     }
 }

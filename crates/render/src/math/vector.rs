@@ -4,6 +4,7 @@
 //! are aliases of [`Vec3`]); the difference matters only under a transform,
 //! where [`crate::math::Transform`] has a separate method for each.
 
+use crate::content_hash::{ContentHash, ContentSink};
 use std::ops::{Add, AddAssign, Div, Index, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// A 3-component `f32` vector.
@@ -238,6 +239,22 @@ impl Vec2 {
     #[inline]
     pub fn length(self) -> f32 {
         self.dot(self).sqrt()
+    }
+}
+
+impl ContentHash for Vec3 {
+    #[inline]
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Vec3 { x, y, z } = self;
+        [x, y, z].feed(sink);
+    }
+}
+
+impl ContentHash for Vec2 {
+    #[inline]
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Vec2 { x, y } = self;
+        [x, y].feed(sink);
     }
 }
 

@@ -12,6 +12,10 @@
 //! lights at infinity are preprocessed with the scene bounds.
 //!
 //! Scene files are loaded by [`crate::pbrt`] (`load_pbrt_scene`, `load_scene_file`).
+//! A scene's content, for content hashes, is fed by its
+//! [`crate::content_hash::ContentHash`] implementation (`content_hash.rs`).
+
+mod content_hash;
 
 use crate::accel::{Accel, Hit};
 use crate::bsdf::Material;
@@ -270,25 +274,6 @@ impl Scene {
     /// The power-proportional light chooser.
     pub fn light_sampler(&self) -> &LightSampler {
         &self.light_sampler
-    }
-    /// Writes, in `Debug` form, everything of the scene that determines
-    /// its pixels: shapes, materials, lights and their emission spectra
-    /// (the camera and the film are the view's, [`crate::view`]). The
-    /// acceleration structure (derived from the shapes, and carrying its
-    /// build time) is left out, so two loads of one scene write the same
-    /// text: the input of a content hash.
-    pub fn write_content(&self, out: &mut dyn std::fmt::Write) -> std::fmt::Result {
-        write!(
-            out,
-            "{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}\n{:?}",
-            self.accel.shapes(),
-            self.materials,
-            self.mesh_info,
-            self.sphere_info,
-            self.disk_info,
-            self.lights,
-            self.light_spectra
-        )
     }
     /// World bounds of the geometry.
     pub fn bounds(&self) -> Bounds3 {

@@ -30,6 +30,7 @@ pub use file::{
 };
 pub use sampled::{SampledSpectrum, SampledWavelengths};
 
+use crate::content_hash::{ContentHash, ContentSink};
 use std::ops::{Add, AddAssign, Div, DivAssign, Index, Mul, MulAssign, Sub};
 
 /// A linear RGB triple (radiance, reflectance, or optical constants).
@@ -179,6 +180,14 @@ impl Mul<Rgb> for f32 {
     #[inline]
     fn mul(self, c: Rgb) -> Rgb {
         c * self
+    }
+}
+
+impl ContentHash for Rgb {
+    #[inline]
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Rgb { r, g, b } = self;
+        [r, g, b].feed(sink);
     }
 }
 

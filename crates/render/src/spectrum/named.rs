@@ -17,6 +17,7 @@
 use super::Rgb;
 use super::file::parse_spectrum_text;
 use super::metals::NAMED_METALS;
+use crate::content_hash::{ContentHash, ContentSink};
 use lowdisc_colour::cie::{LAMBDA_MAX, LAMBDA_MIN, Tabulated, y_integral};
 use std::path::Path;
 use std::sync::LazyLock;
@@ -140,6 +141,27 @@ pub fn sampled_emission(samples: &[(f32, f32)]) -> Option<Tabulated> {
             t.eval(l)
         }
     })
+}
+
+impl ContentHash for Tabulated {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let Tabulated { lambda, value } = self;
+        lambda.feed(sink);
+        value.feed(sink);
+    }
+}
+
+impl ContentHash for NamedSpectrum {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let NamedSpectrum {
+            name,
+            spectrum,
+            rgb,
+        } = self;
+        name.feed(sink);
+        spectrum.feed(sink);
+        rgb.feed(sink);
+    }
 }
 
 #[cfg(test)]

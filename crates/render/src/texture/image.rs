@@ -15,6 +15,7 @@
 //! image texture flips `t` before looking up (see [`super::ImageTexture`]).
 
 use super::TextureError;
+use crate::content_hash::{ContentHash, ContentSink};
 use lowdisc_image::{ImageFormat, ReadOptions, RgbImage, Transfer, read_image_with, srgb_decode};
 use std::path::Path;
 
@@ -201,6 +202,26 @@ impl TexImage {
                 + (1.0 - dx) * dy * v01[c]
                 + dx * dy * v11[c]
         })
+    }
+}
+
+impl ContentHash for WrapMode {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let tag: u8 = match self {
+            WrapMode::Repeat => 0,
+            WrapMode::Clamp => 1,
+            WrapMode::Black => 2,
+        };
+        tag.feed(sink);
+    }
+}
+
+/// The texels: width, height and every pixel's linear RGB.
+impl ContentHash for TexImage {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let TexImage { image } = self;
+        [image.width(), image.height()].feed(sink);
+        image.pixels().feed(sink);
     }
 }
 

@@ -22,6 +22,7 @@ mod registry;
 pub use image::{ColorEncoding, TexImage, WrapMode};
 pub use registry::{TextureError, TextureRegistry};
 
+use crate::content_hash::{ContentHash, ContentSink};
 use crate::math::{Point2, Point3, Transform, Vec3};
 use crate::spectrum::Rgb;
 use std::ops::{Add, Mul};
@@ -331,6 +332,59 @@ impl<T: TextureValue> Texture<T> {
             Texture::Constant(self.evaluate(&TextureEvalContext::default()))
         } else {
             self
+        }
+    }
+}
+
+impl ContentHash for TextureMapping {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            TextureMapping::Uv { su, sv, du, dv } => (0u8, [su, sv, du, dv]).feed(sink),
+            TextureMapping::Planar {
+                texture_from_world,
+                vs,
+                vt,
+                ds,
+                dt,
+            } => (1u8, texture_from_world, [vs, vt], [ds, dt]).feed(sink),
+        }
+    }
+}
+
+impl ContentHash for Checker {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            Checker::TwoD(mapping) => (0u8, mapping).feed(sink),
+            Checker::ThreeD(texture_from_world) => (1u8, texture_from_world).feed(sink),
+        }
+    }
+}
+
+impl ContentHash for ImageTexture {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        let ImageTexture {
+            image,
+            mapping,
+            wrap,
+            scale,
+            invert,
+        } = self;
+        (image, mapping, wrap, scale, invert).feed(sink);
+    }
+}
+
+impl<T: ContentHash> ContentHash for Texture<T> {
+    fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
+        match self {
+            Texture::Constant(v) => (0u8, v).feed(sink),
+            Texture::Image(image) => (1u8, image).feed(sink),
+            Texture::Checkerboard {
+                checker,
+                tex1,
+                tex2,
+            } => (2u8, checker, tex1, tex2).feed(sink),
+            Texture::Scale { tex, scale } => (3u8, tex, scale).feed(sink),
+            Texture::Mix { tex1, tex2, amount } => (4u8, tex1, tex2, amount).feed(sink),
         }
     }
 }
