@@ -53,7 +53,7 @@ def main() -> None:
                         help="log2 of the points for the qmcpy NUS row (its NUS is a "
                              "Python-level tree per dimension: 2^20 points took over "
                              "14 minutes here)")
-    parser.add_argument("--tasks", default="sobol,qmcpy,discrepancy,star",
+    parser.add_argument("--tasks", default="floor,sobol,qmcpy,discrepancy,star",
                         help="comma-separated rows to run (default: all)")
     args = parser.parse_args()
     tasks = set(args.tasks.split(","))
@@ -84,6 +84,8 @@ def main() -> None:
         print("| " + " | ".join(cells) + " |", flush=True)
 
     task = f"Sobol d={d}, 2^20 points"
+    if "floor" in tasks:
+        floor_rows(row, task, n, d, qmc)
     if "sobol" in tasks:
         sobol_rows(row, task, n, d, qmc)
     if "qmcpy" in tasks:
@@ -108,6 +110,19 @@ def two_thread_fill(n, d):
     for t in threads:
         t.join()
     return a
+
+
+def floor_rows(row, task, n, d, qmc):
+    """Owen-scrambled Sobol against the floors (the bare output's cost) and
+    scipy's scrambled Sobol, each pair interleaved; a speed-up below 1 is
+    the floor's time over lowdisc's."""
+    owen = lambda: lqmc.Sobol(d, seed=1).random(n)  # noqa: E731
+    row(task, "lowdisc.qmc.Sobol (Owen, owen-tree)", owen,
+        "(floor) `np.empty((n, d)).fill(0.5)`", lambda: np.empty((n, d)).fill(0.5))
+    row(task, "lowdisc.qmc.Sobol (Owen, owen-tree)", owen,
+        "(floor, 2 threads) `np.copyto` into a fresh array", lambda: two_thread_fill(n, d))
+    row(task, "lowdisc.qmc.Sobol (Owen, owen-tree)", owen,
+        "scipy Sobol(scramble=True) (LMS+shift)", lambda: qmc.Sobol(d, seed=1).random(n))
 
 
 def sobol_rows(row, task, n, d, qmc):

@@ -10,7 +10,8 @@ import pytest
 
 import lowdisc
 
-MODULES = ["lowdisc", "lowdisc._points", "lowdisc._metrics", "lowdisc.qmc"]
+MODULES = ["lowdisc", "lowdisc._points", "lowdisc._metrics", "lowdisc.qmc", "lowdisc._render",
+           "lowdisc._images"]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -152,18 +152,31 @@ def test_discrepancy_is_the_same_bits_for_every_worker_count(method):
             lowdisc.discrepancy(x, method=method, workers=bad)
 
 
-def test_a_long_discrepancy_stops_at_ctrl_c():
-    # A pair sum of about a minute, interrupted after one second: the
-    # interpreter gets KeyboardInterrupt within a few seconds.
+LONG_METRICS = {
+    # A pair sum of about a minute.
+    "discrepancy": ("x = np.random.default_rng(0).random((120_000, 8))\n"
+                    "lowdisc.discrepancy(x, max_work=None, workers=-1)\n"),
+    # The exact star discrepancy of 3-D points, minutes (its recursion).
+    "star_discrepancy": ("x = np.random.default_rng(0).random((60_000, 3))\n"
+                         "lowdisc.star_discrepancy(x, max_work=1e15)\n"),
+    # The 2-D sweep alone, about ten seconds on two idle cores.
+    "star_discrepancy_2d": ("x = np.random.default_rng(0).random((700_000, 2))\n"
+                            "lowdisc.star_discrepancy(x, max_work=1e11)\n"),
+}
+
+
+@pytest.mark.parametrize("metric", sorted(LONG_METRICS))
+def test_a_long_metric_stops_at_ctrl_c(metric):
+    # Interrupted after one second: the interpreter gets KeyboardInterrupt
+    # within a few seconds.
     import signal
     import subprocess
     import sys
     import time
 
     script = ("import numpy as np, lowdisc\n"
-              "x = np.random.default_rng(0).random((120_000, 8))\n"
               "print('start', flush=True)\n"
-              "lowdisc.discrepancy(x, max_work=None, workers=-1)\n"
+              + LONG_METRICS[metric] +
               "print('finished')\n")
     child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True)

@@ -41,6 +41,6 @@ pub use spectrum::{RadialSpectrum, radial_power_spectrum};
 pub use star::{
     BoundsOptions, ExactOptions, MAX_EXACT_DIMS, StarBounds, estimated_work, grid_upper_bound,
     random_box_lower_bound, star_bounds, star_discrepancy, star_discrepancy_1d,
-    star_discrepancy_with, threshold_accepting_lower_bound,
+    star_discrepancy_cancellable, star_discrepancy_with, threshold_accepting_lower_bound,
 };
 pub use structure::{NyquistPower, SpectralPeak, nyquist_power, spectral_peak};

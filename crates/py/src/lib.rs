@@ -1,15 +1,19 @@
 //! # lowdisc-py: lowdisc for Python
 //!
 //! The extension module `lowdisc._lowdisc` behind the Python package in
-//! `python/`: lowdisc's sequences, the renderer's pixel samplers and the
-//! point-set metrics, as numpy arrays.
+//! `python/`: lowdisc's sequences, the renderer's pixel samplers, the
+//! point-set metrics, renders of the path tracer and the experiment's image
+//! measures, as numpy arrays.
 //!
-//! * [`engine`] is the only module that calls the `lowdisc` and
-//!   `lowdisc-metrics` crates. It is plain Rust (no Python types), validates
-//!   every argument before calling them, and is what the unit tests exercise.
+//! * [`engine`] is the only module that calls the `lowdisc`,
+//!   `lowdisc-metrics`, `lowdisc-render`, `lowdisc-image` and
+//!   `lowdisc-experiment` crates. It is plain Rust (no Python types),
+//!   validates every argument before calling them, and is what the unit
+//!   tests exercise.
 //! * `bindings` (feature `python`) turns Python arguments into engine calls
 //!   and engine errors into `ValueError`/`TypeError`, releasing the GIL for
-//!   the work.
+//!   the work; long calls (discrepancies, renders) run on a worker thread
+//!   that Ctrl-C cancels.
 //!
 //! Without the `python` feature the crate builds and tests without Python.
 

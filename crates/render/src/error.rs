@@ -78,6 +78,9 @@ pub enum RenderError {
     ThreadPool(String),
     /// The film could not be built or written.
     Film(crate::film::FilmError),
+    /// The caller's cancel flag stopped the render
+    /// ([`crate::render::render_cancellable`]).
+    Cancelled,
 }
 
 impl std::fmt::Display for RenderError {
@@ -91,6 +94,7 @@ impl std::fmt::Display for RenderError {
             RenderError::Io { path, source } => write!(f, "{}: {source}", path.display()),
             RenderError::ThreadPool(m) => write!(f, "cannot start worker threads: {m}"),
             RenderError::Film(e) => write!(f, "{e}"),
+            RenderError::Cancelled => f.write_str("the render was cancelled"),
         }
     }
 }

@@ -1,5 +1,6 @@
 //! The render loop and the built-in Cornell box: determinism across thread
-//! counts, non-finite samples, scenes without lights, colour tendencies.
+//! counts, non-finite samples, scenes without lights, colour tendencies,
+//! cancellation.
 
 use lowdisc::catalog::SamplerName;
 use lowdisc_render::bsdf::Material;
@@ -11,12 +12,15 @@ use lowdisc_render::geometry::Sphere;
 use lowdisc_render::integrator::PathIntegrator;
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
-use lowdisc_render::render::{MAX_SPP, NoProgress, Progress, RenderOptions, render};
+use lowdisc_render::render::{
+    MAX_SPP, NoProgress, Progress, RenderError, RenderOptions, render, render_cancellable,
+};
 use lowdisc_render::scene::{Emission, Scene, SceneBuilder};
 use lowdisc_render::settings::ranges::MAX_DEPTH_LIMIT;
 use lowdisc_render::spectrum::Rgb;
 use lowdisc_render::view::{CameraSpec, View, ViewSpec};
 use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 fn opts(sampler: SamplerName, spp: u32, threads: usize) -> RenderOptions {
     RenderOptions {
@@ -291,4 +295,28 @@ fn the_image_of_a_renders_sums_is_its_image() {
         let small = PixelBounds::new([3, 2], [19, 12]);
         assert!(image_of_sums(&view, small, spectral, sums).is_err());
     }
+}
+
+/// A flag set by the progress sink after the first finished tile stops the
+/// render: the later tiles stop before their first sample, and the result
+/// is the cancellation error, not an image.
+#[test]
+fn a_flag_set_during_the_render_stops_it() {
+    let (scene, view) = cornell_box([64, 64]).unwrap();
+    let stop = AtomicBool::new(false);
+    let samples = Mutex::new(0u64);
+    let sink = |p: Progress| {
+        stop.store(true, Ordering::Relaxed);
+        *samples.lock().unwrap() = p.samples_done;
+    };
+    let o = opts(SamplerName::ZSobol, 4, 1);
+    let out = render_cancellable(&scene, &view, &o, &sink, &stop);
+    assert!(matches!(out, Err(RenderError::Cancelled)), "{out:?}");
+    // One thread: the first tile (16x16 pixels, 4 spp) was whole, every
+    // later one stopped at once; far fewer than the 64x64x4 samples.
+    assert_eq!(*samples.lock().unwrap(), 16 * 16 * 4);
+    let go = AtomicBool::new(false);
+    let whole = render_cancellable(&scene, &view, &o, &NoProgress, &go).unwrap();
+    let plain = render(&scene, &view, &o, &NoProgress).unwrap();
+    assert_eq!(bits(whole.image.pixels()), bits(plain.image.pixels()));
 }

@@ -9,7 +9,11 @@
 //! Hence one recursive call on `P_i` with the two volume factors
 //! `f_open · v_{i+1}` and `f_closed · v_i` covers both sides. Sub-calls are skipped when
 //! simple bounds (open ≤ factor, closed ≤ |P_i|/N) cannot beat the best found so far.
-//! The top level is parallel over prefixes (rayon).
+//! The top level is parallel over prefixes (rayon). Every prefix checks the
+//! caller's cancel flag first, and so does the 2-D sweep between blocks of
+//! points, so a cancelled computation stops within one sweep per thread.
+
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
@@ -31,24 +35,45 @@ pub fn estimated_work(n: usize, d: usize) -> f64 {
     w
 }
 
-/// Exact star discrepancy of a set of dimension ≥ 2 (no cost guard).
-pub(crate) fn exact(points: &PointSet) -> f64 {
+/// Exact star discrepancy of a set of dimension ≥ 2 (no cost guard);
+/// `None` if `cancel` was set before it finished.
+pub(crate) fn exact(points: &PointSet, cancel: &AtomicBool) -> Option<f64> {
     let n = points.len();
-    let inv_n = 1.0 / n as f64;
+    let run = Run {
+        points,
+        inv_n: 1.0 / n as f64,
+        cancel,
+    };
     let rows: Vec<u32> = (0..n as u32).collect();
-    let (open, closed) = level(points, &rows, 0, Some(1.0), Some(1.0), inv_n, true);
-    open.max(closed).clamp(0.0, 1.0)
+    let (open, closed) = level(&run, &rows, 0, Some(1.0), Some(1.0), true);
+    if cancel.load(Ordering::Relaxed) {
+        return None;
+    }
+    Some(open.max(closed).clamp(0.0, 1.0))
+}
+
+/// What every level of one computation shares.
+struct Run<'a> {
+    points: &'a PointSet,
+    /// `1 / N`.
+    inv_n: f64,
+    /// Set by the caller to stop.
+    cancel: &'a AtomicBool,
 }
 
 fn level(
-    points: &PointSet,
+    run: &Run<'_>,
     rows: &[u32],
     k: usize,
     f_open: Option<f64>,
     f_closed: Option<f64>,
-    inv_n: f64,
     parallel: bool,
 ) -> (f64, f64) {
+    let (points, inv_n) = (run.points, run.inv_n);
+    let none = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+    if run.cancel.load(Ordering::Relaxed) {
+        return none;
+    }
     let d = points.dims();
     let coord = |r: u32, j: usize| points.coords()[r as usize * d + j];
     if rows.is_empty() {
@@ -58,7 +83,7 @@ fn level(
     if k + 2 == d {
         let xs: Vec<f64> = rows.iter().map(|&r| coord(r, k)).collect();
         let ys: Vec<f64> = rows.iter().map(|&r| coord(r, k + 1)).collect();
-        return one_sided_2d(&xs, &ys, f_open, f_closed, inv_n);
+        return one_sided_2d(&xs, &ys, (f_open, f_closed), inv_n, run.cancel);
     }
     let mut sorted = rows.to_vec();
     sorted.sort_unstable_by(|&a, &b| coord(a, k).total_cmp(&coord(b, k)));
@@ -95,14 +120,13 @@ fn level(
         let len = if i == 0 { 0 } else { ends[i - 1] };
         (fo, fc, len)
     };
-    let run = |i: usize| {
+    let prefix = |i: usize| {
         let (fo, fc, len) = task(i);
-        level(points, &sorted[..len], k + 1, fo, fc, inv_n, false)
+        level(run, &sorted[..len], k + 1, fo, fc, false)
     };
     let merge = |a: (f64, f64), b: (f64, f64)| (a.0.max(b.0), a.1.max(b.1));
-    let none = (f64::NEG_INFINITY, f64::NEG_INFINITY);
     if parallel {
-        return (0..=m).into_par_iter().map(run).reduce(|| none, merge);
+        return (0..=m).into_par_iter().map(prefix).reduce(|| none, merge);
     }
     let mut best = none;
     for i in 0..=m {
@@ -118,7 +142,7 @@ fn level(
         }
         let fo = fo.filter(|&f| f > best.0);
         let fc = fc.filter(|_| closed_cap > best.1);
-        let got = level(points, &sorted[..len], k + 1, fo, fc, inv_n, false);
+        let got = level(run, &sorted[..len], k + 1, fo, fc, false);
         best = merge(best, got);
     }
     best

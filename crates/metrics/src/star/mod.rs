@@ -35,6 +35,8 @@ pub use exact_nd::estimated_work;
 pub use lower::{random_box_lower_bound, threshold_accepting_lower_bound};
 pub use upper::{BoundsOptions, StarBounds, grid_upper_bound, star_bounds};
 
+use std::sync::atomic::AtomicBool;
+
 use crate::{MetricsError, PointSet, Result};
 
 /// The most dimensions the exact star discrepancy accepts: its recursion
@@ -83,9 +85,35 @@ pub fn star_discrepancy(points: &PointSet) -> Result<f64> {
 /// `estimated_work(n, d) > options.max_work`, and with [`MetricsError::TooManyDims`]
 /// above [`MAX_EXACT_DIMS`] dimensions.
 pub fn star_discrepancy_with(points: &PointSet, options: &ExactOptions) -> Result<f64> {
+    let never = AtomicBool::new(false);
+    let value = star_discrepancy_cancellable(points, options, &never)?;
+    Ok(value.unwrap_or(f64::NAN))
+}
+
+/// [`star_discrepancy_with`] that another thread can stop: `Ok(None)` if
+/// `cancel` was set before it finished (the recursion checks it before every
+/// prefix, the 2-D sweep every 1,024 columns).
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use lowdisc_metrics::{ExactOptions, PointSet, star_discrepancy_cancellable};
+///
+/// let points = PointSet::from_slice(2, &[0.25, 0.75, 0.75, 0.25]).unwrap();
+/// let go = AtomicBool::new(false);
+/// let value = star_discrepancy_cancellable(&points, &ExactOptions::default(), &go);
+/// assert!(value.unwrap().is_some());
+/// let stop = AtomicBool::new(true);
+/// let value = star_discrepancy_cancellable(&points, &ExactOptions::default(), &stop);
+/// assert_eq!(value.unwrap(), None);
+/// ```
+pub fn star_discrepancy_cancellable(
+    points: &PointSet,
+    options: &ExactOptions,
+    cancel: &AtomicBool,
+) -> Result<Option<f64>> {
     let (n, d) = (points.len(), points.dims());
     if d == 1 {
-        return Ok(star_discrepancy_1d(points.coords()));
+        return Ok(Some(star_discrepancy_1d(points.coords())));
     }
     if d > MAX_EXACT_DIMS {
         return Err(MetricsError::TooManyDims {
@@ -107,5 +135,5 @@ pub fn star_discrepancy_with(points: &PointSet, options: &ExactOptions) -> Resul
             limit: options.max_work,
         });
     }
-    Ok(exact_nd::exact(points))
+    Ok(exact_nd::exact(points, cancel))
 }

@@ -21,6 +21,8 @@
 //! Cost: O(n log n) sorting plus O(n·B + n·m/B) = O(n^{3/2}) for the sweep, memory O(n).
 //! The open and closed passes are independent and run in parallel (rayon::join).
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 /// Lines `slope_j · a + sign · count_j / N` in blocks, each with its upper envelope.
 struct Blocks {
     bsize: usize,
@@ -176,12 +178,14 @@ impl Blocks {
 /// `a ∈ X ∪ {1}`, `b ∈ Y ∪ {1}` and `closed = max #{x≤a, y≤b}/N − f_closed·a·b` over
 /// `a ∈ X`, `b ∈ Y ∪ {1}` (`X`, `Y` the coordinates present, `N = 1/inv_n`). A `None`
 /// factor skips that side and yields `-inf`; an empty set gives `open = f_open`.
+/// Once `cancel` is set both passes stop within [`CANCEL_CHECK`] values of `a`
+/// (the result is then meaningless; the caller discards it).
 pub(crate) fn one_sided_2d(
     xs: &[f64],
     ys: &[f64],
-    f_open: Option<f64>,
-    f_closed: Option<f64>,
+    (f_open, f_closed): (Option<f64>, Option<f64>),
     inv_n: f64,
+    cancel: &AtomicBool,
 ) -> (f64, f64) {
     let mut bvals: Vec<f64> = ys.to_vec();
     bvals.push(1.0);
@@ -193,8 +197,14 @@ pub(crate) fn one_sided_2d(
         .map(|(&x, &y)| (x, bvals.partition_point(|&b| b < y) as u32))
         .collect();
     order.sort_unstable_by(|p, q| p.0.total_cmp(&q.0));
-    let open = || f_open.map_or(f64::NEG_INFINITY, |f| open_pass(&order, &bvals, f, inv_n));
-    let closed = || f_closed.map_or(f64::NEG_INFINITY, |f| closed_pass(&order, &bvals, f, inv_n));
+    let pass = Pass {
+        order: &order,
+        bvals: &bvals,
+        inv_n,
+        cancel,
+    };
+    let open = || f_open.map_or(f64::NEG_INFINITY, |f| open_pass(&pass, f));
+    let closed = || f_closed.map_or(f64::NEG_INFINITY, |f| closed_pass(&pass, f));
     if order.len() >= 2048 {
         rayon::join(open, closed)
     } else {
@@ -202,13 +212,37 @@ pub(crate) fn one_sided_2d(
     }
 }
 
+/// How many values of `a` a pass sweeps between checks of its cancel flag.
+const CANCEL_CHECK: usize = 1024;
+
+/// The sorted points of one 2-D sweep and what both passes share.
+struct Pass<'a> {
+    /// `(x, index of y in bvals)`, by `x`.
+    order: &'a [(f64, u32)],
+    /// The distinct `y` values and 1, sorted.
+    bvals: &'a [f64],
+    inv_n: f64,
+    cancel: &'a AtomicBool,
+}
+
+impl Pass<'_> {
+    /// Whether the pass should stop before the `step`-th value of `a`.
+    fn cancelled(&self, step: usize) -> bool {
+        step % CANCEL_CHECK == 0 && self.cancel.load(Ordering::Relaxed)
+    }
+}
+
 /// Open boxes: query before inserting the points at the current `a`.
-fn open_pass(order: &[(f64, u32)], bvals: &[f64], f: f64, inv_n: f64) -> f64 {
+fn open_pass(pass: &Pass<'_>, f: f64) -> f64 {
+    let (order, bvals) = (pass.order, pass.bvals);
     let slopes = bvals.iter().map(|&b| f * b).collect();
-    let mut blocks = Blocks::new(slopes, -1.0, inv_n, false);
+    let mut blocks = Blocks::new(slopes, -1.0, pass.inv_n, false);
     let mut best = f64::NEG_INFINITY;
     let mut i = 0;
-    while i < order.len() {
+    for step in 0.. {
+        if i >= order.len() || pass.cancelled(step) {
+            break;
+        }
         let a = order[i].0;
         best = blocks.query(a, best);
         while i < order.len() && order[i].0 == a {
@@ -223,12 +257,16 @@ fn open_pass(order: &[(f64, u32)], bvals: &[f64], f: f64, inv_n: f64) -> f64 {
 }
 
 /// Closed boxes: query after inserting the points at the current `a`.
-fn closed_pass(order: &[(f64, u32)], bvals: &[f64], f: f64, inv_n: f64) -> f64 {
+fn closed_pass(pass: &Pass<'_>, f: f64) -> f64 {
+    let (order, bvals) = (pass.order, pass.bvals);
     let slopes = bvals.iter().map(|&b| -f * b).collect();
-    let mut blocks = Blocks::new(slopes, 1.0, inv_n, true);
+    let mut blocks = Blocks::new(slopes, 1.0, pass.inv_n, true);
     let mut best = f64::NEG_INFINITY;
     let mut i = 0;
-    while i < order.len() {
+    for step in 0.. {
+        if i >= order.len() || pass.cancelled(step) {
+            break;
+        }
         let a = order[i].0;
         while i < order.len() && order[i].0 == a {
             blocks.add_suffix(order[i].1 as usize);

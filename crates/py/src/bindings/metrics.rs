@@ -1,14 +1,11 @@
 //! The metric functions of `lowdisc._lowdisc`: each takes a C-contiguous
 //! float64 array `(n, d)` and runs the engine with the GIL released.
 
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Duration;
-
 use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
-use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 
 use super::arrays::{contiguous_2d, engine_error, slice};
+use super::interrupt::{interruptible, no_tick};
 use crate::engine::metrics::{self, BoundsRequest};
 
 /// A checked sample and its dimension count.
@@ -30,13 +27,13 @@ fn discrepancy(
 ) -> PyResult<f64> {
     let (array, d) = self::sample(sample)?;
     let x = slice(&array)?;
-    interruptible(py, |cancel| {
+    let work = |cancel: &_| {
         crate::engine::with_workers(workers, || {
             metrics::discrepancy(x, d, method, iterative, cancel)
         })
         .and_then(|r| r)
-    })?
-    .map_err(engine_error)
+    };
+    interruptible(py, work, no_tick)?.map_err(engine_error)
 }
 
 /// The estimated work of the L2 discrepancies (pairs times dimensions).
@@ -45,49 +42,14 @@ fn discrepancy_work(n: usize, d: usize) -> f64 {
     metrics::discrepancy_work(n, d)
 }
 
-/// Runs `work` on its own thread with the GIL released while this (the
-/// main) thread checks for Ctrl-C every 20 ms (and for the end every 1 ms). On an interrupt the work's
-/// cancel flag is set, the work is waited for (it stops within a chunk) and
-/// the `KeyboardInterrupt` is raised.
-fn interruptible<T: Send>(
-    py: Python<'_>,
-    work: impl FnOnce(&AtomicBool) -> T + Send,
-) -> PyResult<T> {
-    let (cancel, done) = (AtomicBool::new(false), AtomicBool::new(false));
-    std::thread::scope(|scope| {
-        let handle = scope.spawn(|| {
-            let result = work(&cancel);
-            done.store(true, Ordering::Release);
-            result
-        });
-        loop {
-            let finished = py.detach(|| {
-                (0..20).any(|_| {
-                    std::thread::sleep(Duration::from_millis(1));
-                    done.load(Ordering::Acquire)
-                })
-            });
-            if finished {
-                break;
-            }
-            if let Err(interrupt) = py.check_signals() {
-                cancel.store(true, Ordering::Relaxed);
-                py.detach(|| handle.join()).ok();
-                return Err(interrupt);
-            }
-        }
-        py.detach(|| handle.join())
-            .map_err(|_| PyRuntimeError::new_err("the metric's thread panicked"))
-    })
-}
-
-/// The exact star discrepancy, refused above `max_work` estimated operations.
+/// The exact star discrepancy, refused above `max_work` estimated
+/// operations; Ctrl-C stops it.
 #[pyfunction]
 fn star_discrepancy(py: Python<'_>, sample: &Bound<'_, PyAny>, max_work: f64) -> PyResult<f64> {
     let (array, d) = self::sample(sample)?;
     let x = slice(&array)?;
-    py.detach(|| metrics::star_discrepancy(x, d, max_work))
-        .map_err(engine_error)
+    let work = |cancel: &_| metrics::star_discrepancy(x, d, max_work, cancel);
+    interruptible(py, work, no_tick)?.map_err(engine_error)
 }
 
 /// The estimated operations of the exact star discrepancy of `n` points in `d`.

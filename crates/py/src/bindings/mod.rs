@@ -7,7 +7,10 @@
 //! runs with the GIL released (`Python::detach`).
 
 mod arrays;
+mod images;
+mod interrupt;
 mod metrics;
+mod render;
 
 use numpy::{
     PyArray1, PyArray2, PyArray3, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
@@ -129,5 +132,7 @@ fn _lowdisc(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(pixel_samples, m)?)?;
     m.add_function(wrap_pyfunction!(sobol_matrices, m)?)?;
     m.add_function(wrap_pyfunction!(sampler_names, m)?)?;
-    metrics::register(m)
+    metrics::register(m)?;
+    images::register(m)?;
+    render::register(m)
 }

@@ -57,13 +57,18 @@ pub fn star_work(n: usize, d: usize) -> f64 {
 }
 
 /// The exact star discrepancy, refused when its estimated work exceeds
-/// `max_work` (the message says to use the bounds instead).
-pub fn star_discrepancy(coords: &[f64], d: usize, max_work: f64) -> Result<f64> {
+/// `max_work` (the message says to use the bounds instead). Setting
+/// `cancel` from another thread stops it (the error says so).
+pub fn star_discrepancy(
+    coords: &[f64],
+    d: usize,
+    max_work: f64,
+    cancel: &AtomicBool,
+) -> Result<f64> {
     let points = point_set(coords, d)?;
-    Ok(lowdisc_metrics::star_discrepancy_with(
-        &points,
-        &ExactOptions { max_work },
-    )?)
+    let options = ExactOptions { max_work };
+    lowdisc_metrics::star_discrepancy_cancellable(&points, &options, cancel)?
+        .ok_or_else(|| EngineError::value("the star discrepancy was cancelled"))
 }
 
 /// Lower and upper bounds of the star discrepancy.
@@ -171,9 +176,14 @@ mod tests {
     #[test]
     fn star_discrepancy_of_one_point_is_its_analytic_value() {
         // One point at x: D* = max(x, 1 - x) in 1-D.
-        assert_eq!(star_discrepancy(&[0.25], 1, 1e9).unwrap(), 0.75);
+        let go = AtomicBool::new(false);
+        assert_eq!(star_discrepancy(&[0.25], 1, 1e9, &go).unwrap(), 0.75);
         let b = star_bounds(&grid(), 2, &BoundsRequest::default()).unwrap();
-        let exact = star_discrepancy(&grid(), 2, 1e9).unwrap();
+        let exact = star_discrepancy(&grid(), 2, 1e9, &go).unwrap();
+        // A set flag stops it.
+        let stop = AtomicBool::new(true);
+        let cancelled = star_discrepancy(&grid(), 2, 1e9, &stop).unwrap_err();
+        assert!(cancelled.to_string().contains("cancelled"), "{cancelled}");
         assert!(b.lower <= exact && exact <= b.upper, "{b:?} {exact}");
     }
 
@@ -207,6 +217,6 @@ mod tests {
         let stop = AtomicBool::new(true);
         assert!(err(discrepancy(&grid(), 2, "CD", false, &stop)).contains("cancelled"));
         assert!(err(min_distance(&grid(), 2, "cosine")).contains("'euclidean' or 'toroidal'"));
-        assert!(err(star_discrepancy(&grid(), 2, 1.0)).contains("star_bounds"));
+        assert!(err(star_discrepancy(&grid(), 2, 1.0, &go)).contains("star_bounds"));
     }
 }

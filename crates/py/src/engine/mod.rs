@@ -7,13 +7,18 @@
 //!   an array the caller provides; [`sobol_fill`] is the Sobol part.
 //! * [`pixel`]: the renderer's pixel samplers, by catalog name.
 //! * [`metrics`]: discrepancies, distances and spectra of point arrays.
+//! * [`render`]: the path tracer's images, as `lowdisc render` makes them.
+//! * [`images`]: error metrics of images against a reference and the
+//!   experiment's paired-seed ratio.
 //!
 //! Samplers and randomizations are chosen through lowdisc's catalog by name,
 //! so a change of lowdisc's types touches only this module.
 
+pub mod images;
 pub mod metrics;
 pub mod pixel;
 pub mod points;
+pub mod render;
 pub mod sobol_fill;
 
 use core::fmt;

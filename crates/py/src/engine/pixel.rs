@@ -46,15 +46,19 @@ pub struct PixelSpec {
     pub seed: u64,
 }
 
-/// The samples of `spec`, `pixels x spp x dims` values (row-major).
-pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
-    let name = SamplerName::from_str(&spec.sampler).map_err(|_| {
+/// The sampler called `name`; an unknown name is an error listing them all.
+pub fn sampler_name(name: &str) -> Result<SamplerName> {
+    SamplerName::from_str(name).map_err(|_| {
         EngineError::value(format!(
-            "unknown sampler {:?}; expected one of {}",
-            spec.sampler,
+            "unknown sampler {name:?}; expected one of {}",
             sampler_names().join(", ")
         ))
-    })?;
+    })
+}
+
+/// The samples of `spec`, `pixels x spp x dims` values (row-major).
+pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
+    let name = sampler_name(&spec.sampler)?;
     let mut config = SamplerConfig::new(name);
     config.seed = spec.seed;
     config.spp = spec.spp;

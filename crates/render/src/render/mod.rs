@@ -37,6 +37,12 @@
 //!
 //! **Progress** goes through a [`ProgressSink`] (any `Fn(Progress) + Sync`
 //! closure): the library itself never prints.
+//!
+//! **Cancellation.** [`render_cancellable`] takes a flag that another thread
+//! may set (a front end's Ctrl-C): every tile checks it before each camera
+//! sample, so the render stops within one path per worker and returns
+//! [`RenderError::Cancelled`]. [`render`] is the same loop with a flag that
+//! is never set.
 
 mod camera_sample;
 
@@ -55,7 +61,7 @@ use lowdisc::catalog::{Sampler, SamplerConfig};
 use lowdisc::pixel::PixelSampler;
 use lowdisc_tiles::{Tile, Walk, tiles};
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 /// A progress report, sent after every finished tile.
@@ -167,6 +173,37 @@ pub fn render(
     opts: &RenderOptions,
     progress: &dyn ProgressSink,
 ) -> Result<RenderOutput, RenderError> {
+    render_cancellable(scene, view, opts, progress, &AtomicBool::new(false))
+}
+
+/// [`render`] that stops early, with [`RenderError::Cancelled`], once
+/// `cancel` is set (from another thread: the progress sink, a signal
+/// handler). A render that finishes before the flag is set is the same
+/// image as [`render`]'s.
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use lowdisc::catalog::SamplerName;
+/// use lowdisc_render::cornell::cornell_scene;
+/// use lowdisc_render::render::{NoProgress, RenderError, RenderOptions, render_cancellable};
+/// use lowdisc_render::view::View;
+///
+/// let (scene, spec) = cornell_scene().unwrap();
+/// let view = View::new(&spec, [8, 8]).unwrap();
+/// let opts = RenderOptions::new(SamplerName::ZSobol, 0, 1);
+/// let stop = AtomicBool::new(true);
+/// let out = render_cancellable(&scene, &view, &opts, &NoProgress, &stop);
+/// assert!(matches!(out, Err(RenderError::Cancelled)));
+/// let go = AtomicBool::new(false);
+/// assert!(render_cancellable(&scene, &view, &opts, &NoProgress, &go).is_ok());
+/// ```
+pub fn render_cancellable(
+    scene: &Scene,
+    view: &View,
+    opts: &RenderOptions,
+    progress: &dyn ProgressSink,
+    cancel: &AtomicBool,
+) -> Result<RenderOutput, RenderError> {
     opts.validate()?;
     let full = view.pixel_bounds();
     let window = opts.window_in(full)?;
@@ -197,7 +234,13 @@ pub fn render(
         rects
             .par_iter()
             .map(|&tile| {
-                let r = render_tile(scene, view, opts, &sampler, tile, film.tile(tile.bounds));
+                let r = render_tile(
+                    (scene, view, opts),
+                    &sampler,
+                    tile,
+                    film.tile(tile.bounds),
+                    cancel,
+                );
                 total.finished(&r, progress);
                 r
             })
@@ -213,6 +256,9 @@ pub fn render(
             (pool.install(run), n)
         }
     };
+    if cancel.load(Ordering::Relaxed) {
+        return Err(RenderError::Cancelled);
+    }
     let mut stats = RenderStats {
         threads,
         ..RenderStats::default()
@@ -297,12 +343,11 @@ impl Totals {
 /// other sampler goes through the [`Sampler`] enum's dispatch. The values
 /// are the same either way.
 fn render_tile(
-    scene: &Scene,
-    view: &View,
-    opts: &RenderOptions,
+    (scene, view, opts): (&Scene, &View, &RenderOptions),
     sampler: &Sampler,
     tile: Tile,
     film: FilmTile,
+    cancel: &AtomicBool,
 ) -> TileResult {
     let range = opts.sample_range();
     let walk = Walk::new(
@@ -313,21 +358,22 @@ fn render_tile(
         sampler.is_order_dependent(),
     );
     match sampler.with_stream(tile.index) {
-        Sampler::ZSobol(s) => render_tile_with(scene, view, opts, s, walk, film),
-        Sampler::Independent(s) => render_tile_with(scene, view, opts, s, walk, film),
-        other => render_tile_with(scene, view, opts, other, walk, film),
+        Sampler::ZSobol(s) => render_tile_with(scene, view, opts, s, (walk, film), cancel),
+        Sampler::Independent(s) => render_tile_with(scene, view, opts, s, (walk, film), cancel),
+        other => render_tile_with(scene, view, opts, other, (walk, film), cancel),
     }
 }
 
 /// [`render_tile`] with a sampler of type `S`: traces every camera sample
-/// of `walk` in order and adds the kept ones to `film`.
+/// of `walk` in order and adds the kept ones to `film`, until `cancel` is
+/// set.
 fn render_tile_with<S: PixelSampler>(
     scene: &Scene,
     view: &View,
     opts: &RenderOptions,
     mut sampler: S,
-    walk: Walk,
-    mut film: FilmTile,
+    (walk, mut film): (Walk, FilmTile),
+    cancel: &AtomicBool,
 ) -> TileResult {
     let mut stats = PathStats::default();
     let shot = Shot {
@@ -338,6 +384,9 @@ fn render_tile_with<S: PixelSampler>(
     };
     let mut samples = 0;
     for visit in walk {
+        if cancel.load(Ordering::Relaxed) {
+            break;
+        }
         let (pixel, s) = (visit.pixel, visit.index);
         let (l, weight) = if opts.spectral {
             trace_sample::<SampledSpectrum, _>(&shot, &mut sampler, pixel, s, &mut stats)
