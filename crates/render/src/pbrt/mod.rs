@@ -42,6 +42,7 @@ mod blocks;
 mod lights;
 mod loader;
 mod materials;
+mod media;
 mod options;
 mod shapes;
 mod state;

@@ -32,6 +32,8 @@ impl PbrtLoader {
         loc: &Loc,
     ) -> Result<(), ParseError> {
         self.camera_loc = Some(loc.clone());
+        // pbrt-v4's camera is in the current interface's outside medium.
+        self.builder.set_camera_medium(self.state.cur.media.outside);
         let camera_from_world = self.state.cur.ctm;
         let world_from_camera = camera_from_world.inverse();
         self.state.named.insert("camera".into(), world_from_camera);
