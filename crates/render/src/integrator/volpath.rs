@@ -217,8 +217,7 @@ impl PathIntegrator {
                             continue;
                         }
                         let le = C::emission(le, scene.light_spectrum(i), w);
-                        let p_l =
-                            || scene.light_sampler().pmf(i) * light.pdf_li(&prev, ray.d);
+                        let p_l = || scene.light_sampler().pmf(i) * light.pdf_li(&prev, ray.d);
                         path.add_emission(le, p_l);
                     }
                     break 'bounces;
