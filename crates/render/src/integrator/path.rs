@@ -1,10 +1,8 @@
 //! The path-tracing loop ([`PathIntegrator::li`]) and next-event estimation.
 
 use super::{LightStrategy, PathIntegrator, PathStats, sqr};
-use crate::accel::Hit;
 use crate::bsdf::material::BsdfContext;
 use crate::bsdf::{Bsdf, LayeredExitWeight, TransportMode, power_heuristic};
-use crate::geometry::SurfaceHit;
 use crate::light::LightSampleContext;
 use crate::math::{Frame, Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to};
 use crate::scene::Scene;
@@ -94,7 +92,7 @@ impl PathIntegrator {
                 break;
             };
             let (material, light) = scene.material_and_light(hit.prim);
-            let surf = hit.surface;
+            let mut surf = hit.surface;
             let wo = -ray.d;
             if let Some(li) = light {
                 let light = &lights[li as usize];
@@ -115,7 +113,32 @@ impl PathIntegrator {
             }
             depth += 1;
             let u = VertexSamples::draw(sampler);
-            let (bsdf, surf) = self.surface_bsdf::<C>(scene, &hit, material, wo, bsdf_seed, w);
+            let material = &scene.materials()[material as usize];
+            let mut bsdf_ctx = BsdfContext {
+                ns: surf.ns,
+                dpdus: surf.dpdu,
+                seed: bsdf_seed,
+                p: surf.p,
+                uv: surf.uv,
+                wo,
+            };
+            let mut shading = hit.shading;
+            if let Some(bump) = material.bump(&bsdf_ctx) {
+                let g = scene.shapes().shading_geometry(hit.prim, &surf);
+                let g = bump.apply(&bsdf_ctx.texture_context(), surf.ng, &g);
+                (surf.ns, surf.dpdu) = (g.n, g.dpdu);
+                (bsdf_ctx.ns, bsdf_ctx.dpdus) = (g.n, g.dpdu);
+                shading = None;
+            }
+            // The frame first, so that the BSDF is built in one place.
+            let frame = match shading {
+                Some(frame) => frame,
+                None => Frame::shading(surf.ns, surf.dpdu),
+            };
+            let mut bsdf = material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w);
+            if self.layered_exit_weight != LayeredExitWeight::UNBIASED {
+                bsdf.bxdf.set_layered_exit_weight(self.layered_exit_weight);
+            }
             let flags = bsdf.flags();
             let ctx = LightSampleContext::new(surf.p, surf.ng, surf.ns);
             if flags.is_non_specular() && self.strategy != LightStrategy::BsdfOnly {
@@ -150,49 +173,6 @@ impl PathIntegrator {
             }
         }
         l
-    }
-
-    /// The BSDF of material `material` (a scene index) at `hit`, seen from
-    /// `wo`, with its bump or normal map applied, and the surface with the
-    /// shading normal and tangent that the map gives.
-    #[inline(always)]
-    pub(super) fn surface_bsdf<C: Colour>(
-        &self,
-        scene: &Scene,
-        hit: &Hit,
-        material: u32,
-        wo: Vec3,
-        bsdf_seed: u64,
-        w: &C::Wavelengths,
-    ) -> (Bsdf<C>, SurfaceHit) {
-        let mut surf = hit.surface;
-        let material = &scene.materials()[material as usize];
-        let mut bsdf_ctx = BsdfContext {
-            ns: surf.ns,
-            dpdus: surf.dpdu,
-            seed: bsdf_seed,
-            p: surf.p,
-            uv: surf.uv,
-            wo,
-        };
-        let mut shading = hit.shading;
-        if let Some(bump) = material.bump(&bsdf_ctx) {
-            let g = scene.shapes().shading_geometry(hit.prim, &surf);
-            let g = bump.apply(&bsdf_ctx.texture_context(), surf.ng, &g);
-            (surf.ns, surf.dpdu) = (g.n, g.dpdu);
-            (bsdf_ctx.ns, bsdf_ctx.dpdus) = (g.n, g.dpdu);
-            shading = None;
-        }
-        // The frame first, so that the BSDF is built in one place.
-        let frame = match shading {
-            Some(frame) => frame,
-            None => Frame::shading(surf.ns, surf.dpdu),
-        };
-        let mut bsdf = material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w);
-        if self.layered_exit_weight != LayeredExitWeight::UNBIASED {
-            bsdf.bxdf.set_layered_exit_weight(self.layered_exit_weight);
-        }
-        (bsdf, surf)
     }
 
     /// The weight of emission reached by a BSDF-sampled (or camera) ray, or

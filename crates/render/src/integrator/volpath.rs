@@ -46,10 +46,12 @@
 use super::path::VertexSamples;
 use super::{PathIntegrator, PathStats};
 use crate::accel::Hit;
-use crate::bsdf::{Bsdf, TransportMode};
+use crate::bsdf::material::BsdfContext;
+use crate::bsdf::{Bsdf, LayeredExitWeight, TransportMode};
+use crate::geometry::SurfaceHit;
 use crate::light::LightSampleContext;
 use crate::math::{
-    Normal3, Point3, Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to,
+    Frame, Normal3, Point3, Ray, SHADOW_EPSILON, Vec3, offset_ray_origin, spawn_ray, spawn_ray_to,
 };
 use crate::medium::phase::{henyey_greenstein, sample_henyey_greenstein};
 use crate::medium::{MediumPoint, finite_distance};
@@ -147,7 +149,10 @@ enum Scatter<'a, C: Colour> {
 
 impl PathIntegrator {
     /// [`PathIntegrator::li_for`] for a scene with media (see the module
-    /// docs): the camera ray starts in the scene's camera medium.
+    /// docs): the camera ray starts in the scene's camera medium. Never
+    /// inlined, so that the path tracer of scenes without media compiles
+    /// as it did before media existed.
+    #[inline(never)]
     pub(super) fn li_volumetric<S: PixelSampler, C: Colour>(
         &self,
         scene: &Scene,
@@ -407,6 +412,50 @@ impl PathIntegrator {
             path.beta /= 1.0 - q;
         }
         Some(spawn_ray(surf.p, surf.ng, bs.wi))
+    }
+
+    /// The BSDF of material `material` (a scene index) at `hit`, seen from
+    /// `wo`, with its bump or normal map applied, and the surface with the
+    /// shading normal and tangent that the map gives (what the path tracer
+    /// does inline at each vertex; it keeps its own copy so that its loop
+    /// compiles as it did before media existed).
+    pub(super) fn surface_bsdf<C: Colour>(
+        &self,
+        scene: &Scene,
+        hit: &Hit,
+        material: u32,
+        wo: Vec3,
+        bsdf_seed: u64,
+        w: &C::Wavelengths,
+    ) -> (Bsdf<C>, SurfaceHit) {
+        let mut surf = hit.surface;
+        let material = &scene.materials()[material as usize];
+        let mut bsdf_ctx = BsdfContext {
+            ns: surf.ns,
+            dpdus: surf.dpdu,
+            seed: bsdf_seed,
+            p: surf.p,
+            uv: surf.uv,
+            wo,
+        };
+        let mut shading = hit.shading;
+        if let Some(bump) = material.bump(&bsdf_ctx) {
+            let g = scene.shapes().shading_geometry(hit.prim, &surf);
+            let g = bump.apply(&bsdf_ctx.texture_context(), surf.ng, &g);
+            (surf.ns, surf.dpdu) = (g.n, g.dpdu);
+            (bsdf_ctx.ns, bsdf_ctx.dpdus) = (g.n, g.dpdu);
+            shading = None;
+        }
+        // The frame first, so that the BSDF is built in one place.
+        let frame = match shading {
+            Some(frame) => frame,
+            None => Frame::shading(surf.ns, surf.dpdu),
+        };
+        let mut bsdf = material.bsdf_in_frame::<C>(frame, &bsdf_ctx, w);
+        if self.layered_exit_weight != LayeredExitWeight::UNBIASED {
+            bsdf.bxdf.set_layered_exit_weight(self.layered_exit_weight);
+        }
+        (bsdf, surf)
     }
 
     /// Next-event estimation at `ctx` (a surface point, or a point in a
