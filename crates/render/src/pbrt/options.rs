@@ -188,9 +188,9 @@ impl PbrtLoader {
         ps: &ParamSet,
         loc: &Loc,
     ) -> Result<(), ParseError> {
-        // Without participating media pbrt-v4's "volpath" computes what
-        // "path" computes; a medium it would scatter in is an error at its
-        // `MediumInterface`.
+        // Both are rendered: a scene with media by the volumetric path
+        // tracer (see `media.rs`), one without by the path tracer, which
+        // computes what pbrt-v4's "volpath" computes there.
         if !matches!(ty, "path" | "volpath") {
             let what = format!("Integrator \"{ty}\"");
             self.approximated(loc, &what, "rendered by the path tracer")?;
