@@ -41,10 +41,10 @@ const CASES: &[(&str, &str, &str, &str, &str)] = &[
     (
         "medium.pbrt",
         "",
-        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n\
+        "MakeNamedMedium \"fog\" \"string type\" \"uniformgrid\"\n\
          MediumInterface \"fog\" \"\"\n",
-        "medium.pbrt:6:1:",
-        "participating medium \"fog\"",
+        "medium.pbrt:5:1:",
+        "medium type \"uniformgrid\"",
     ),
     (
         "curve.pbrt",

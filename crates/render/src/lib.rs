@@ -19,7 +19,7 @@
 //! | scenes | [`pbrt`] (pbrt-v4 loader: graphics state, shapes, materials, textures, lights, options), [`cornell`] (built-in scene), [`scene`] (builder and the renderable scene) |
 //! | settings and view | [`settings`] (every render setting: layers, defaults, ranges, resolution), [`view`] (camera, film and filter, built once per render) |
 //! | rendering | [`render`] (tiles, threads, progress; one camera sample), [`integrator`] (path tracer, sampler-dimension layout), [`camera`] (perspective camera), [`film`] (pixel sums, tiles, output), [`filter`] (pixel filters and their sampling) |
-//! | appearance | [`bsdf`] (BxDFs, materials, `mix`), [`texture`] (one generic texture, image maps, registry), [`light`] (point, spot, distant, area, infinite and image lights; light selection), [`spectrum`] (the `Colour` trait: RGB, or four sampled wavelengths with uplift, named spectra and the film's sensor) |
+//! | appearance | [`bsdf`] (BxDFs, materials, `mix`), [`texture`] (one generic texture, image maps, registry), [`light`] (point, spot, distant, area, infinite and image lights; light selection), [`medium`] (participating media, phase function), [`spectrum`] (the `Colour` trait: RGB, or four sampled wavelengths with uplift, named spectra and the film's sensor) |
 //! | geometry | [`geometry`] (triangles, spheres, disks, bilinear patches, Loop subdivision), [`accel`] (shapes plus BVH, full hits), [`bvh`] (binned-SAH build, traversal), [`mesh`] (PLY files) |
 //! | foundations | [`math`] (vectors, rays, boxes, transforms, frames), [`sampling`] (tabulated 1-D/2-D distributions), [`content_hash`] (the explicit serialisation content hashes are taken over), [`error`] (the crate's errors) |
 //!
@@ -44,6 +44,7 @@ pub mod geometry;
 pub mod integrator;
 pub mod light;
 pub mod math;
+pub mod medium;
 pub mod mesh;
 pub mod pbrt;
 pub mod preset;

@@ -5,6 +5,8 @@
 //! lobe (1), BSDF direction (2), Russian roulette (1) - so bounce `k` starts
 //! at dimension `2 + 7k`. In spectral mode the wavelength sample comes
 //! first (dimension 0), the lens takes 1-2 and bounce `k` starts at `3 + 7k`.
+//! In a scene with media the hero lane follows the lens (dimension 2) and
+//! every bounce draws `DIMS_PER_MEDIA_BOUNCE` dimensions from `3 + 10k`.
 //! Also: the BSDF seed given to the path reaches the layered BSDFs.
 
 use lowdisc::pixel::PixelSampler;
@@ -12,9 +14,12 @@ use lowdisc_render::bsdf::{Material, Roughness};
 use lowdisc_render::camera::PerspectiveParams;
 use lowdisc_render::filter::Filter;
 use lowdisc_render::geometry::Sphere;
-use lowdisc_render::integrator::{DIMS_PER_BOUNCE, PathIntegrator, PathStats};
+use lowdisc_render::integrator::{
+    DIMS_PER_BOUNCE, DIMS_PER_MEDIA_BOUNCE, PathIntegrator, PathStats,
+};
 use lowdisc_render::light::{Light, PointLight};
 use lowdisc_render::math::{Point3, Transform, Vec3};
+use lowdisc_render::medium::{HomogeneousMedium, Medium, MediumInterface};
 use lowdisc_render::render::{Shot, trace_sample};
 use lowdisc_render::scene::{Scene, SceneBuilder};
 use lowdisc_render::spectrum::{Rgb, SampledSpectrum};
@@ -191,4 +196,66 @@ fn spectral_samples_draw_the_wavelength_first_then_the_rgb_layout_shifted_by_one
         ]);
     }
     assert_eq!(sampler.log, want);
+}
+
+/// [`inside_a_sphere`] filled with a thin medium (the camera in it too):
+/// rendered by the volumetric path tracer.
+fn inside_a_foggy_sphere(material: Material) -> (Scene, View) {
+    let (_, view) = inside_a_sphere(material.clone());
+    let mut b = SceneBuilder::new();
+    let fog = b.add_medium(Medium::Homogeneous(HomogeneousMedium {
+        sigma_a: Rgb::splat(0.01),
+        sigma_s: Rgb::splat(0.01),
+        le: Rgb::ZERO,
+        g: 0.0,
+    }));
+    b.set_medium_interface(MediumInterface {
+        inside: Some(fog),
+        outside: None,
+    });
+    b.set_camera_medium(Some(fog));
+    let m = b.add_material(material);
+    b.add_sphere(
+        Sphere::new(Transform::IDENTITY, 1.0, true).unwrap(),
+        m,
+        None,
+    );
+    let light = PointLight::new(
+        &Transform::IDENTITY,
+        Point3::new(0.2, 0.3, 0.1),
+        Rgb::ONE,
+        1.0,
+        None,
+    );
+    b.add_light(Light::Point(light.unwrap()));
+    (b.build().unwrap(), view)
+}
+
+#[test]
+fn media_scenes_draw_the_hero_lane_then_ten_dimensions_per_bounce() {
+    assert_eq!(DIMS_PER_MEDIA_BOUNCE, 10);
+    let scene = inside_a_foggy_sphere(Material::diffuse(Rgb::splat(0.8)));
+    assert!(scene.0.has_media());
+    for max_depth in [0, 1, 4] {
+        let (l, log) = trace(&scene, max_depth, 0);
+        // The 1-D values (0.99) send every free flight through the fog to
+        // the sphere: a surface vertex ends every bounce, and one more
+        // bounce is drawn for the ray that reaches the depth limit.
+        let mut want = vec![Draw::Start(0), Draw::Pixel2d, Draw::TwoD(0), Draw::OneD(2)];
+        for k in 0..=max_depth {
+            let d = 3 + DIMS_PER_MEDIA_BOUNCE * k;
+            want.extend([
+                Draw::OneD(d),
+                Draw::OneD(d + 1),
+                Draw::OneD(d + 2),
+                Draw::OneD(d + 3),
+                Draw::TwoD(d + 4),
+                Draw::OneD(d + 6),
+                Draw::TwoD(d + 7),
+                Draw::OneD(d + 9),
+            ]);
+        }
+        assert_eq!(log, want, "max depth {max_depth}");
+        assert!(max_depth == 0 || l.max_component() > 0.0, "lit: {l:?}");
+    }
 }

@@ -87,8 +87,19 @@ fn the_hash_of_a_fixed_scene_is_pinned() {
     );
 }
 
+/// The scene's text before its `AttributeBegin` when the sphere holds a
+/// homogeneous medium of absorption `sigma_a`.
+fn with_fog(sigma_a: &str) -> String {
+    format!(
+        "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \
+         \"rgb sigma_a\" [ {sigma_a} {sigma_a} {sigma_a} ]\n\
+         AttributeBegin\n  MediumInterface \"fog\" \"\"\n"
+    )
+}
+
 #[test]
 fn every_kind_of_change_changes_the_hash() {
+    let (fog, denser_fog) = (with_fog("0.1"), with_fog("0.2"));
     let changes = [
         ("material parameter", "[ 0.5 0.5 0.5 ]", "[ 0.5 0.6 0.5 ]"),
         ("textured material", "[ 0.2 ]", "[ 0.3 ]"),
@@ -102,6 +113,8 @@ fn every_kind_of_change_changes_the_hash() {
         ),
         ("mesh vertex", "0 1 0 ]", "0 1.001 0 ]"),
         ("sphere", "Translate 0 2 0", "Translate 0 2.5 0"),
+        ("medium", "AttributeBegin\n", &fog),
+        ("medium density", "AttributeBegin\n", &denser_fog),
     ];
     let base = hash_of("base", "", "");
     let mut seen = vec![base.clone()];

@@ -43,8 +43,29 @@
 //!    `get_1d`, BSDF direction `get_2d`, Russian roulette `get_1d`. They are
 //!    drawn even when unused (specular vertex, no lights, early depth), so
 //!    bounce `k` (0-based) always starts at dimension `2 + 7k`.
+//!
+//! **Scenes with participating media** ([`Scene::has_media`](crate::scene::Scene::has_media))
+//! are rendered by the volumetric path tracer (pbrt-v4's `volpath`; see
+//! `volpath.rs`), with this layout after the lens:
+//! 1. the hero lane: `get_1d` (dimension 2; spectral mode 3), which chooses
+//!    the lane (RGB channel or wavelength) whose density samples distances
+//!    in media;
+//! 2. every bounce, before its ray is traced, [`DIMS_PER_MEDIA_BOUNCE`] = 10
+//!    dimensions: free-flight distance `get_1d`, collision event `get_1d`,
+//!    stream seed `get_1d`, then the seven vertex dimensions above (at a
+//!    point in a medium the lobe and Russian-roulette dimensions are unused
+//!    and the BSDF direction samples the phase function). Bounce `k` starts
+//!    at dimension `3 + 10k` (spectral mode `4 + 10k`). A bounce's further
+//!    collisions and segments (after crossing an `interface` surface) draw
+//!    from a PCG32 stream seeded by a hash of its seed dimension.
+//!
+//! Scenes without media render exactly as before media existed: the branch
+//! to the volumetric tracer is taken once per camera sample.
 
 mod path;
+mod volpath;
+
+pub use volpath::{DIMS_PER_MEDIA_BOUNCE, transmittance};
 
 use crate::bsdf::LayeredExitWeight;
 

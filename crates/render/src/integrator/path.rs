@@ -10,17 +10,17 @@ use crate::spectrum::{Colour, Rgb};
 use lowdisc::pixel::{Dims, PixelSampler};
 
 /// The sample values one scattering vertex uses, drawn in the documented order.
-struct VertexSamples {
-    light_choice: f32,
-    light: [f32; 2],
-    lobe: f32,
-    bsdf: [f32; 2],
-    rr: f32,
+pub(super) struct VertexSamples {
+    pub(super) light_choice: f32,
+    pub(super) light: [f32; 2],
+    pub(super) lobe: f32,
+    pub(super) bsdf: [f32; 2],
+    pub(super) rr: f32,
 }
 
 impl VertexSamples {
     #[inline]
-    fn draw<S: PixelSampler>(s: &mut S) -> Self {
+    pub(super) fn draw<S: PixelSampler>(s: &mut S) -> Self {
         let [[light_choice, _], light, [lobe, _], bsdf, [rr, _]] =
             s.get_values([Dims::One, Dims::Two, Dims::One, Dims::Two, Dims::One]);
         VertexSamples {
@@ -62,6 +62,9 @@ impl PathIntegrator {
         w: &C::Wavelengths,
         stats: &mut PathStats,
     ) -> C {
+        if scene.has_media() {
+            return self.li_volumetric(scene, ray, sampler, bsdf_seed, w, stats);
+        }
         let mut l = C::ZERO;
         let mut beta = C::ONE;
         let mut depth = 0u32;

@@ -2,6 +2,7 @@
 //! the loader's state; shapes, materials, lights and rendering options are
 //! handled in sibling modules.
 
+use super::media::MediaTable;
 use super::state::{MatRef, StateStack, pbrt_matrix};
 use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;
@@ -9,6 +10,7 @@ use crate::error::RenderError;
 use crate::film::FilmParams;
 use crate::filter::Filter;
 use crate::math::Transform;
+use crate::medium::MediumInterface;
 use crate::scene::SceneBuilder;
 use crate::settings::Given;
 use crate::texture::TextureRegistry;
@@ -28,6 +30,7 @@ pub(super) struct ShapeDef {
     pub ctm: Transform,
     pub reverse: bool,
     pub material: MatRef,
+    pub media: MediumInterface,
     pub loc: Loc,
 }
 
@@ -47,6 +50,8 @@ pub struct PbrtLoader {
     pub(super) named_materials: HashMap<String, MatRef>,
     pub(super) default_material: Option<u32>,
     pub(super) textures: TextureRegistry,
+    /// The named participating media.
+    pub(super) media: MediaTable,
     /// Every material added by a directive, by scene index (for `mix`).
     pub(super) material_values: HashMap<u32, Material>,
     objects: HashMap<String, Vec<ShapeDef>>,
@@ -84,6 +89,7 @@ impl PbrtLoader {
             named_materials: HashMap::new(),
             default_material: None,
             textures: TextureRegistry::new(),
+            media: MediaTable::default(),
             material_values: HashMap::new(),
             objects: HashMap::new(),
             current_object: None,
@@ -175,6 +181,10 @@ impl PbrtLoader {
             let resolution = Given::new(view.film.resolution, format!("{at}: Film"));
             self.settings.layer.resolution = Some(resolution);
         }
+        let media = std::mem::take(&mut self.media).into_media();
+        for m in media.map_err(|e| RenderError::InvalidScene(e.to_string()))? {
+            self.builder.add_medium(m);
+        }
         let scene = self.builder.build()?;
         Ok(LoadedScene {
             scene,
@@ -192,6 +202,7 @@ impl PbrtLoader {
             ctm: self.state.cur.ctm,
             reverse: self.state.cur.reverse_orientation,
             material: self.state.cur.material,
+            media: self.state.cur.media,
             loc: loc.clone(),
         };
         if let Some((_, defs)) = &mut self.current_object {
@@ -239,25 +250,6 @@ impl PbrtLoader {
             self.unsupported(loc, &what);
             Ok(())
         }
-    }
-
-    /// `MediumInterface`: pbrt-v4's `path` integrator ignores media, as
-    /// lowdisc does; under any other integrator (pbrt-v4's default is
-    /// `volpath`) a named medium scatters and absorbs, which lowdisc cannot.
-    fn medium_interface(&mut self, inside: &str, outside: &str, loc: &Loc) -> TargetResult {
-        let Some(name) = [inside, outside].into_iter().find(|n| !n.is_empty()) else {
-            return Ok(());
-        };
-        let integrator = self.settings.integrator.as_deref().unwrap_or("volpath");
-        if integrator == "path" {
-            self.warnings.warn_once(
-                loc,
-                "participating media are ignored (as by pbrt-v4's \"path\" integrator)",
-            );
-            return Ok(());
-        }
-        let what = format!("participating medium \"{name}\" (Integrator \"{integrator}\")");
-        self.approximated(loc, &what, "the medium is ignored")
     }
 
     fn attribute_end(&mut self, loc: &Loc) {
@@ -320,7 +312,9 @@ impl ParserTarget for PbrtLoader {
             Directive::Accelerator(..) => {
                 self.unsupported(loc, "Accelerator (the renderer always uses its SAH BVH)")
             }
-            Directive::MakeNamedMedium(..) => {}
+            Directive::MakeNamedMedium(name, params) => {
+                self.make_named_medium(&name, &params, loc)?
+            }
             Directive::MediumInterface(inside, outside) => {
                 self.medium_interface(&inside, &outside, loc)?
             }

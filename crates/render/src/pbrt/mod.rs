@@ -11,8 +11,8 @@
 //!
 //! **No silent substitutions.** A pbrt-v4 feature that lowdisc lacks and
 //! that changes the image (a `curve` shape, the `hair` or `measured`
-//! material, bump or normal maps, alpha cut-outs, participating media under
-//! a volumetric integrator, the `bdpt`, `sppm`, `mlt`, ... integrators, a
+//! material, bump or normal maps, alpha cut-outs, grid media (`uniformgrid`,
+//! `rgbgrid`, `cloud`, `nanovdb`), the `bdpt`, `sppm`, `mlt`, ... integrators, a
 //! non-sRGB colour space, ...) is an error naming the feature and its
 //! `file:line:column`, unless [`LoadOptions::approximate`] is set: then it
 //! is a warning saying what is rendered instead. Features that do not change
@@ -42,6 +42,7 @@ mod blocks;
 mod lights;
 mod loader;
 mod materials;
+mod media;
 mod options;
 mod shapes;
 mod state;

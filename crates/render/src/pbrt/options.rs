@@ -32,6 +32,8 @@ impl PbrtLoader {
         loc: &Loc,
     ) -> Result<(), ParseError> {
         self.camera_loc = Some(loc.clone());
+        // pbrt-v4's camera is in the current interface's outside medium.
+        self.builder.set_camera_medium(self.state.cur.media.outside);
         let camera_from_world = self.state.cur.ctm;
         let world_from_camera = camera_from_world.inverse();
         self.state.named.insert("camera".into(), world_from_camera);
@@ -186,9 +188,9 @@ impl PbrtLoader {
         ps: &ParamSet,
         loc: &Loc,
     ) -> Result<(), ParseError> {
-        // Without participating media pbrt-v4's "volpath" computes what
-        // "path" computes; a medium it would scatter in is an error at its
-        // `MediumInterface`.
+        // Both are rendered: a scene with media by the volumetric path
+        // tracer (see `media.rs`), one without by the path tracer, which
+        // computes what pbrt-v4's "volpath" computes there.
         if !matches!(ty, "path" | "volpath") {
             let what = format!("Integrator \"{ty}\"");
             self.approximated(loc, &what, "rendered by the path tracer")?;

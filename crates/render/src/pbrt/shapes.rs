@@ -10,7 +10,8 @@ use crate::geometry::{
 };
 use crate::light::diffuse_power_scale;
 use crate::math::{Normal3, Point2, Point3, Transform, Vec3};
-use crate::scene::Emission;
+use crate::medium::MediumInterface;
+use crate::scene::{Emission, INTERFACE};
 use crate::spectrum::Rgb;
 use crate::texture::FloatTexture;
 use pbrt_format::{FloatOrTexture, Loc, ParamSet, ParseError, TargetResult};
@@ -246,12 +247,17 @@ impl PbrtLoader {
         let alpha = self.shape_alpha(def, area.is_some())?;
         def.params
             .finish(&format!("Shape \"{}\"", def.ty), &mut self.warnings)?;
-        let Some(material) = self.material_index(def.material) else {
-            self.warnings.warn_once(
-                &loc,
-                "shapes with the \"interface\" material (medium boundaries) are skipped",
-            );
-            return Ok(());
+        let material = match self.material_index(def.material) {
+            Some(m) => m,
+            // A medium boundary: kept where the medium changes across it.
+            None if def.media.is_transition() => INTERFACE,
+            None => {
+                self.warnings.warn_once(
+                    &loc,
+                    "shapes with the \"interface\" material and no medium transition are skipped",
+                );
+                return Ok(());
+            }
         };
         let emission = area.map(|a| {
             let mut l = a.l;
@@ -274,6 +280,7 @@ impl PbrtLoader {
         self.builder
             .set_emission_spectrum(area.and_then(|a| a.spectrum.clone()));
         self.builder.set_shape_alpha(alpha);
+        self.builder.set_medium_interface(def.media);
         match built {
             Built::Mesh(m) => {
                 self.counts.triangles += m.len();
@@ -290,6 +297,8 @@ impl PbrtLoader {
         }
         self.builder.set_emission_spectrum(None);
         self.builder.set_shape_alpha(None);
+        self.builder
+            .set_medium_interface(MediumInterface::default());
         Ok(())
     }
 }

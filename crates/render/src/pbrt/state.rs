@@ -42,6 +42,8 @@ pub(crate) struct GraphicsState {
     pub material: MatRef,
     /// The current area light.
     pub area: Option<AreaSpec>,
+    /// The current `MediumInterface` (scene medium indices).
+    pub media: crate::medium::MediumInterface,
 }
 
 impl Default for GraphicsState {
@@ -51,6 +53,7 @@ impl Default for GraphicsState {
             reverse_orientation: false,
             material: MatRef::Default,
             area: None,
+            media: crate::medium::MediumInterface::default(),
         }
     }
 }

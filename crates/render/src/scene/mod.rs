@@ -11,6 +11,13 @@
 //! mesh, as in pbrt) becomes one [`DiffuseAreaLight`] in [`Scene::lights`];
 //! lights at infinity are preprocessed with the scene bounds.
 //!
+//! Participating media: [`SceneBuilder::add_medium`] adds a [`Medium`];
+//! shapes added after [`SceneBuilder::set_medium_interface`] separate the
+//! media it names, and [`SceneBuilder::set_camera_medium`] says where the
+//! camera is. A shape whose material is [`INTERFACE`] has no surface: it
+//! only marks where the medium changes. A scene with media or interface
+//! shapes ([`Scene::has_media`]) is rendered by the volumetric path tracer.
+//!
 //! Scene files are loaded by [`crate::pbrt`] (`load_pbrt_scene`, `load_scene_file`).
 //! A scene's content, for content hashes, is fed by its
 //! [`crate::content_hash::ContentHash`] implementation (`content_hash.rs`).
@@ -24,6 +31,7 @@ use crate::error::RenderError;
 use crate::geometry::{Disk, Prim, ShapeId, ShapeSet, Sphere, TriangleMesh};
 use crate::light::{DiffuseAreaLight, Light, LightSampler, LightType};
 use crate::math::{Bounds3, Ray};
+use crate::medium::{Medium, MediumInterface};
 use crate::spectrum::Rgb;
 use crate::spectrum::named::EmissionSpectrum;
 use crate::texture::FloatTexture;
@@ -36,6 +44,11 @@ pub struct Emission {
     /// Emit from both sides of the surface.
     pub two_sided: bool,
 }
+
+/// The material index of a shape without a surface (pbrt-v4's `interface`
+/// material): rays pass through it, changing medium when its
+/// [`MediumInterface`] is a transition.
+pub const INTERFACE: u32 = u32::MAX;
 
 /// Per-shape data: material index and the index of its first area light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,6 +69,11 @@ pub struct SceneBuilder {
     lights: Vec<(Light, Option<EmissionSpectrum>)>,
     emission_spectrum: Option<EmissionSpectrum>,
     alpha: Option<FloatTexture>,
+    media: Vec<Medium>,
+    medium_interface: MediumInterface,
+    /// The medium interface of every shape (by kind, as `mesh_info`...).
+    shape_media: [Vec<MediumInterface>; 3],
+    camera_medium: Option<u32>,
 }
 
 impl SceneBuilder {
@@ -74,6 +92,7 @@ impl SceneBuilder {
         self.apply_alpha(ShapeId::Mesh(i));
         let s = self.emission_spectrum.clone();
         self.mesh_info.push((material, emission, s));
+        self.shape_media[0].push(self.medium_interface);
     }
     /// Adds a sphere with a material and optional emission.
     pub fn add_sphere(&mut self, s: Sphere, material: u32, emission: Option<Emission>) {
@@ -81,6 +100,7 @@ impl SceneBuilder {
         self.apply_alpha(p.shape());
         let s = self.emission_spectrum.clone();
         self.sphere_info.push((material, emission, s));
+        self.shape_media[1].push(self.medium_interface);
     }
     /// Adds a disk with a material and optional emission.
     pub fn add_disk(&mut self, d: Disk, material: u32, emission: Option<Emission>) {
@@ -88,6 +108,7 @@ impl SceneBuilder {
         self.apply_alpha(p.shape());
         let s = self.emission_spectrum.clone();
         self.disk_info.push((material, emission, s));
+        self.shape_media[2].push(self.medium_interface);
     }
     /// Adds a light that is not attached to a shape (point, infinite...).
     pub fn add_light(&mut self, l: Light) {
@@ -105,6 +126,20 @@ impl SceneBuilder {
     /// `None` (the default) for opaque shapes.
     pub fn set_shape_alpha(&mut self, alpha: Option<FloatTexture>) {
         self.alpha = alpha;
+    }
+    /// Adds a participating medium; returns its index.
+    pub fn add_medium(&mut self, m: Medium) -> u32 {
+        self.media.push(m);
+        (self.media.len() - 1) as u32
+    }
+    /// The media inside and outside the shapes added after this call (the
+    /// default: vacuum on both sides).
+    pub fn set_medium_interface(&mut self, mi: MediumInterface) {
+        self.medium_interface = mi;
+    }
+    /// The medium the camera is in (`None`, the default: vacuum).
+    pub fn set_camera_medium(&mut self, m: Option<u32>) {
+        self.camera_medium = m;
     }
     fn apply_alpha(&mut self, shape: ShapeId) {
         if let Some(a) = &self.alpha {
@@ -125,7 +160,7 @@ impl SceneBuilder {
         for (kind, group) in groups.into_iter().enumerate() {
             for (i, (material, emission, spectrum)) in group.iter().enumerate() {
                 let (material, emission) = (*material, *emission);
-                if material >= nmat {
+                if material >= nmat && material != INTERFACE {
                     return Err(RenderError::InvalidScene(format!(
                         "material index {material} out of range ({nmat} materials)"
                     )));
@@ -168,6 +203,12 @@ impl SceneBuilder {
             .filter(|&i| lights[i].light_type() == LightType::Infinite)
             .collect();
         let [mesh_info, sphere_info, disk_info] = infos;
+        let media = MediaOfScene::new(
+            self.media,
+            self.shape_media,
+            self.camera_medium,
+            [&mesh_info, &sphere_info, &disk_info],
+        )?;
         Ok(Scene {
             accel,
             materials: self.materials,
@@ -178,6 +219,52 @@ impl SceneBuilder {
             light_spectra,
             infinite_lights,
             light_sampler,
+            media,
+        })
+    }
+}
+
+/// A scene's media: the media, each shape's interface (kept only where it
+/// is a transition) and the camera's medium.
+#[derive(Clone, Debug, Default)]
+struct MediaOfScene {
+    media: Vec<Medium>,
+    shape_media: [Vec<MediumInterface>; 3],
+    camera_medium: Option<u32>,
+    /// Media or shapes without a surface exist.
+    active: bool,
+}
+
+impl MediaOfScene {
+    fn new(
+        media: Vec<Medium>,
+        mut shape_media: [Vec<MediumInterface>; 3],
+        camera_medium: Option<u32>,
+        infos: [&[ShapeInfo]; 3],
+    ) -> Result<MediaOfScene, RenderError> {
+        let n = media.len() as u32;
+        let named = shape_media
+            .iter()
+            .flatten()
+            .flat_map(|mi| [mi.inside, mi.outside]);
+        if let Some(m) = named.chain([camera_medium]).flatten().find(|&m| m >= n) {
+            return Err(RenderError::InvalidScene(format!(
+                "medium index {m} out of range ({n} media)"
+            )));
+        }
+        let interfaces = infos
+            .iter()
+            .flat_map(|i| i.iter())
+            .any(|i| i.material == INTERFACE);
+        let active = n > 0 || interfaces;
+        if !active || shape_media.iter().flatten().all(|mi| !mi.is_transition()) {
+            shape_media = Default::default();
+        }
+        Ok(MediaOfScene {
+            media,
+            shape_media,
+            camera_medium,
+            active,
         })
     }
 }
@@ -205,6 +292,7 @@ pub struct Scene {
     light_spectra: Vec<Option<EmissionSpectrum>>,
     infinite_lights: Vec<usize>,
     light_sampler: LightSampler,
+    media: MediaOfScene,
 }
 
 impl Scene {
@@ -232,6 +320,11 @@ impl Scene {
     #[inline]
     pub fn intersect_hit(&self, ray: &Ray) -> Option<Hit> {
         self.accel.intersect(ray, f32::INFINITY)
+    }
+    /// The closest hit along `ray` with `t < t_max`.
+    #[inline]
+    pub fn intersect_hit_before(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.accel.intersect(ray, t_max)
     }
     /// The material index of primitive `prim` and the index of its area
     /// light, if it emits ([`SceneHit::material`], [`SceneHit::light`]).
@@ -274,6 +367,33 @@ impl Scene {
     /// The power-proportional light chooser.
     pub fn light_sampler(&self) -> &LightSampler {
         &self.light_sampler
+    }
+    /// True when the scene has participating media or shapes without a
+    /// surface ([`INTERFACE`]): it is then rendered by the volumetric path
+    /// tracer. Scenes without are rendered as before media existed.
+    #[inline]
+    pub fn has_media(&self) -> bool {
+        self.media.active
+    }
+    /// The participating media.
+    pub fn media(&self) -> &[Medium] {
+        &self.media.media
+    }
+    /// The medium the camera is in.
+    pub fn camera_medium(&self) -> Option<u32> {
+        self.media.camera_medium
+    }
+    /// The media on the two sides of primitive `prim`'s surface when they
+    /// differ (`None` when crossing it keeps the ray's medium).
+    #[inline]
+    pub fn medium_interface(&self, prim: Prim) -> Option<MediumInterface> {
+        let (kind, i) = match prim {
+            Prim::Triangle { mesh, .. } => (0, mesh),
+            Prim::Sphere(i) => (1, i),
+            Prim::Disk(i) => (2, i),
+        };
+        let mi = *self.media.shape_media[kind].get(i as usize)?;
+        mi.is_transition().then_some(mi)
     }
     /// World bounds of the geometry.
     pub fn bounds(&self) -> Bounds3 {

@@ -57,8 +57,15 @@ pub trait Colour:
     fn lane(&self, i: usize) -> f32;
     /// `f` applied to every lane.
     fn map(self, f: impl Fn(f32) -> f32) -> Self;
+    /// The number of lanes.
+    const LANES: usize;
     /// The largest lane.
     fn max_component(self) -> f32;
+    /// The mean of the lanes.
+    #[inline]
+    fn average(self) -> f32 {
+        (0..Self::LANES).map(|i| self.lane(i)).sum::<f32>() / Self::LANES as f32
+    }
     /// True when every lane is exactly zero.
     fn is_black(self) -> bool;
     /// True when every lane is finite.
@@ -95,6 +102,7 @@ impl Colour for Rgb {
     type Wavelengths = ();
     const ZERO: Rgb = Rgb::ZERO;
     const ONE: Rgb = Rgb::ONE;
+    const LANES: usize = 3;
     #[inline]
     fn splat(v: f32) -> Rgb {
         Rgb::splat(v)
@@ -163,6 +171,7 @@ impl Colour for SampledSpectrum {
     type Wavelengths = SampledWavelengths;
     const ZERO: SampledSpectrum = SampledSpectrum([0.0; 4]);
     const ONE: SampledSpectrum = SampledSpectrum([1.0; 4]);
+    const LANES: usize = 4;
     #[inline]
     fn splat(v: f32) -> Self {
         SampledSpectrum([v; 4])
