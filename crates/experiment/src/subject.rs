@@ -86,7 +86,23 @@ pub(crate) fn load(config: &ExperimentConfig, observer: &dyn Progress) -> Result
     Ok((Subject { scene, view }, hash))
 }
 
-/// The render options of one render of the experiment.
+/// The render options of one compared sampler's render: [`options`] with
+/// the experiment's net when the sampler reads one.
+pub fn sampler_options(
+    config: &ExperimentConfig,
+    sampler: SamplerName,
+    seed: u64,
+    spp: u32,
+) -> RenderOptions {
+    let mut o = options(config, sampler, seed, spp);
+    if sampler.takes_net() {
+        o.sampler.net = config.net;
+    }
+    o
+}
+
+/// The render options of one render of the experiment (the built-in
+/// Sobol matrices for every sampler).
 pub fn options(
     config: &ExperimentConfig,
     sampler: SamplerName,

@@ -29,7 +29,7 @@ use lowdisc_render::render::RenderOptions;
 
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::cut::{Cut, Piece, cut, sample_range};
-use crate::subject::options;
+use crate::subject::{options, sampler_options};
 use crate::sweep::THRESHOLDS;
 
 /// Which reference a reference unit renders.
@@ -150,13 +150,13 @@ impl Unit {
                 let spp = reference_settings(config, target).1;
                 options(config, REF_SAMPLER, REF_SEED, spp)
             }
-            Work::Run { sampler, seed } => options(config, sampler, seed, config.spp),
+            Work::Run { sampler, seed } => sampler_options(config, sampler, seed, config.spp),
             Work::Sweep { threshold, seed } => {
                 let mut o = options(config, SamplerName::PaperRepro, seed, config.spp);
                 o.sampler.threshold = threshold;
                 o
             }
-            Work::Convergence { sampler, spp, .. } => options(config, sampler, 0, spp),
+            Work::Convergence { sampler, spp, .. } => sampler_options(config, sampler, 0, spp),
         };
         let piece = self.work.piece();
         if piece.cut.ranges > 1 {

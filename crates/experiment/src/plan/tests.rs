@@ -13,6 +13,7 @@ fn config() -> ExperimentConfig {
     ExperimentConfig {
         scene: None,
         samplers: vec![SamplerName::Sobol, SamplerName::Halton],
+        net: lowdisc::net::Net::SOBOL,
         spp: 4,
         runs: 3,
         resolution: [10, 10],
