@@ -108,6 +108,38 @@ fn plan_json_reads_back_to_the_same_plan_and_id() {
 }
 
 #[test]
+fn a_net_is_written_in_full_and_read_back_for_the_compared_samplers_only() {
+    let mut c = config();
+    c.samplers = vec![SamplerName::ZSobol, SamplerName::Halton];
+    c.net = lowdisc::net::Net::named("onetwo").unwrap();
+    let file = PlanFile::new(Plan::new(c, 1, [false, true]), "/w".into()).unwrap();
+    let text = file.to_json().unwrap();
+    let back = PlanFile::parse(&text, Path::new("d")).unwrap();
+    assert_eq!(back.plan.config.net, file.plan.config.net);
+    assert_eq!(back.id, file.id);
+    let nets: Vec<_> = back
+        .plan
+        .units
+        .iter()
+        .map(|u| u.options(&back.plan.config).sampler)
+        .map(|s| (s.name, s.net.is_sobol()))
+        .collect();
+    assert!(nets.contains(&(SamplerName::ZSobol, false)));
+    assert!(nets.contains(&(SamplerName::Halton, true)));
+    assert!(
+        nets.contains(&(SamplerName::SobolOwen, true)),
+        "the reference"
+    );
+    assert!(
+        nets.iter()
+            .all(|&(n, sobol)| sobol != (n == SamplerName::ZSobol))
+    );
+    // A column changed: the matrices no longer hash to the recorded id.
+    let edited = text.replacen("2147483648", "2147483649", 1);
+    assert!(PlanFile::parse(&edited, Path::new("d")).is_err());
+}
+
+#[test]
 fn an_edited_or_foreign_plan_is_refused() {
     let file = PlanFile::new(Plan::new(config(), 1, [true, true]), "/w".into()).unwrap();
     let text = file.to_json().unwrap();
