@@ -15,6 +15,7 @@ const BITS: usize = 32;
 
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-changed=src/net/recurrence.rs");
     avx512_cfg();
     let params = sobol::params::JoeKuoD6::extended();
     let num_dimensions = params.dim_params.len() + 1;
@@ -25,7 +26,7 @@ fn main() {
     table.extend((0..BITS).map(|c| 1u32 << (31 - c)));
     for (offset, dim) in params.dim_params.iter().enumerate() {
         assert_eq!(dim.d as usize, offset + 2, "Joe-Kuo rows out of order");
-        table.extend_from_slice(&columns(dim.a, &dim.m));
+        table.extend_from_slice(&sobol_columns(dim.a, &dim.m));
     }
 
     let big_endian = std::env::var("CARGO_CFG_TARGET_ENDIAN").as_deref() == Ok("big");
@@ -73,23 +74,4 @@ fn avx512_cfg() {
     }
 }
 
-/// The 32 generator-matrix columns of one dimension from its primitive
-/// polynomial coefficients `a` (degree `s = m.len()`) and initial direction
-/// numbers `m_1..m_s` (Joe & Kuo's notation; `m_i` odd and `< 2^i`).
-fn columns(a: u32, m: &[u32]) -> [u32; BITS] {
-    let s = m.len();
-    let mut v = [0u32; BITS];
-    for i in 0..BITS.min(s) {
-        v[i] = m[i] << (31 - i);
-    }
-    for i in s..BITS {
-        let mut x = v[i - s] ^ (v[i - s] >> s);
-        for k in 1..s {
-            if (a >> (s - 1 - k)) & 1 == 1 {
-                x ^= v[i - k];
-            }
-        }
-        v[i] = x;
-    }
-    v
-}
+include!("src/net/recurrence.rs");

@@ -1,13 +1,14 @@
 //! Parsers for the structured command-line values (`--pixel X,Y`,
 //! `--res WxH`, `--dim-range A..B`, `--sample-range A..B`,
-//! `--pixel-bounds X0,X1,Y0,Y1`, sampler names), each returning a
-//! one-line error that says what was expected.
+//! `--pixel-bounds X0,X1,Y0,Y1`, sampler names, `--net NAME|FILE`), each
+//! returning a one-line error that says what was expected.
 
 use std::ops::Range;
 use std::str::FromStr;
 
 use anyhow::{Context, Result, anyhow, bail};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
+use lowdisc::net::{DigitalNet, NAMED_NETS, Net};
 use lowdisc_render::film::PixelBounds;
 use lowdisc_render::render::SampleRange;
 
@@ -123,6 +124,29 @@ pub fn pixel_bounds(text: &str) -> Result<PixelBounds> {
         bail!("malformed {flag} `{text}`: need X0 < X1 and Y0 < Y1 (the bounds exclude X1 and Y1)");
     }
     Ok(PixelBounds::new([v[0], v[2]], [v[1], v[3]]))
+}
+
+/// The largest net file read (bytes): Joe & Kuo's 21,201 dimensions take
+/// under 2 MB.
+const MAX_NET_FILE: u64 = 64 << 20;
+
+/// `--net`: a built-in net's name ([`NAMED_NETS`]), else a file of
+/// direction numbers (Joe & Kuo's format) or generator matrices
+/// (`lowdisc::net`); a bad file is an error naming it and the line.
+pub fn net(text: &str) -> Result<Net> {
+    if let Some(net) = Net::named(text) {
+        return Ok(net);
+    }
+    let names: Vec<&str> = NAMED_NETS.iter().map(|(n, _)| *n).collect();
+    let bytes = lowdisc_files::read_input_limited(text, MAX_NET_FILE).map_err(|e| {
+        anyhow!(
+            "--net `{text}` is not a built-in net ({}) nor a readable file: {e}",
+            names.join(", ")
+        )
+    })?;
+    let contents =
+        String::from_utf8(bytes).map_err(|_| anyhow!("{text}: the file is not UTF-8 text"))?;
+    Ok(DigitalNet::parse(text, &contents)?.into_net())
 }
 
 /// A sampler configuration from the common options, validated.

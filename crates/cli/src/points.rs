@@ -72,6 +72,11 @@ pub struct PointsArgs {
     /// Sampler name (`--help` lists them all).
     #[arg(long, short = 's', value_name = "NAME", long_help = sampler_help::sampler_list("Sampler name, one of:", ""))]
     sampler: String,
+    /// Generator matrices for the Sobol samplers: a built-in net (`sobol`,
+    /// `onetwo`) or a file of Joe-Kuo direction numbers or matrices
+    /// [default: sobol].
+    #[arg(long, value_name = "NAME|FILE", long_help = sampler_help::net_help())]
+    net: Option<String>,
     /// Seed of every random choice.
     #[arg(long, default_value_t = 0)]
     seed: u64,
@@ -157,6 +162,10 @@ impl PointsArgs {
             self.threshold,
             self.paper_all_dims,
         )?;
+        if let Some(net) = &self.net {
+            sampler.net = parse::net(net)?;
+            sampler.validate_net()?;
+        }
         if let Some(plot) = &self.plot {
             lowdisc_plot::Format::from_path(plot)?;
         }

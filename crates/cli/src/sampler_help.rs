@@ -1,8 +1,28 @@
 //! The sampler lists of `--help` (`render`, `points`, `experiment`), built
 //! at run time from the catalog's table so that a new sampler appears in
-//! every list without an edit here.
+//! every list without an edit here, and the help of `--net`.
 
-use lowdisc::catalog::{Family, SamplerName};
+use lowdisc::catalog::{Family, SamplerName, net_sampler_list};
+use lowdisc::net::NAMED_NETS;
+
+/// The long help of a `--net` option: the built-in nets, the file formats
+/// and the samplers that read a net.
+pub fn net_help() -> String {
+    let mut out = String::from(
+        "Generator matrices for the Sobol samplers, in place of Joe & Kuo's: a \
+         built-in net,\n",
+    );
+    for (name, description) in NAMED_NETS {
+        out += &format!("  {name:8}  {description}\n");
+    }
+    out += "or a file: Joe & Kuo's direction numbers (header `d s a m_i`, then `d s a \
+            m_1 .. m_s` per dimension; dimension 0 is implicit) or generator matrices \
+            (one dimension per line, 32 columns, hex 0x.. or decimal, # comments); see \
+            docs/guide/nets.md. Read by: ";
+    out += &net_sampler_list();
+    out += ". [default: sobol]";
+    out
+}
 
 /// The long help of a `--sampler` option: `intro`, then every catalog name
 /// with its one-line description, then `outro` (when not empty).

@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use lowdisc::catalog::SamplerName;
+use lowdisc::net::Net;
 use lowdisc_experiment::comparison::BASELINE;
 use lowdisc_experiment::study::collection::{available, collection};
 use lowdisc_experiment::study::{SceneSource, StudyConfig, StudyScene, run_study, write};
@@ -72,6 +73,11 @@ pub struct StudyArgs {
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS,
           long_help = crate::sampler_help::sampler_list("Samplers (comma-separated, or `all`), of:", ""))]
     samplers: Vec<String>,
+    /// Generator matrices of the compared Sobol samplers (a built-in net:
+    /// `sobol`, `onetwo`; or a file); the reference and the other samplers
+    /// keep theirs [default: sobol].
+    #[arg(long, value_name = "NAME|FILE", long_help = crate::sampler_help::net_help())]
+    net: Option<String>,
     /// The samplers the ratios are relative to (comma-separated; the first
     /// is the main tables' baseline).
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = BASELINE)]
@@ -192,6 +198,7 @@ impl StudyArgs {
         let config = StudyConfig {
             scenes,
             samplers: samplers(&self.samplers)?,
+            net: self.net.as_deref().map_or(Ok(Net::SOBOL), parse::net)?,
             baselines: samplers(&self.baseline).context("--baseline")?,
             spp: self.spp.unwrap_or(spp),
             runs: self.runs.unwrap_or(runs),

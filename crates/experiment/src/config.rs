@@ -12,6 +12,7 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use lowdisc::catalog::SamplerName;
+use lowdisc::net::Net;
 use lowdisc_render::preset::ScenePreset;
 use lowdisc_render::render::RenderOptions;
 use lowdisc_render::settings::{Given, Settings, SettingsLayer, ranges};
@@ -46,6 +47,9 @@ pub struct ExperimentConfig {
     pub blur_sigma: f64,
     /// Samplers, in the order given.
     pub samplers: Vec<SamplerName>,
+    /// The generator matrices of the compared samplers that read a net
+    /// (`--net`; never of the references, which stay Sobol's).
+    pub net: Net,
     /// Samples per pixel.
     pub spp: u32,
     /// Runs per sampler.
@@ -135,6 +139,12 @@ impl ExperimentConfig {
     pub fn validate_ranges(&self) -> Result<()> {
         if self.samplers.is_empty() {
             bail!("--samplers needs at least one sampler name");
+        }
+        if !self.net.is_sobol() && !self.samplers.iter().any(|s| s.takes_net()) {
+            bail!(
+                "--net: none of --samplers reads a net; those that do: {}",
+                lowdisc::catalog::net_sampler_list()
+            );
         }
         for (flag, res) in [("--res", self.resolution), ("--conv-res", self.conv_res)] {
             named(flag, ranges::resolution(res))?;

@@ -23,6 +23,7 @@ mod config;
 mod define;
 mod family;
 mod name;
+mod nets;
 mod params;
 mod points;
 mod sampler;
@@ -30,5 +31,6 @@ mod table;
 
 pub use config::{MAX_RESOLUTION, SamplerConfig};
 pub use family::Family;
+pub use nets::{NET_SAMPLERS, net_sampler_list};
 pub use points::{MAX_POINT_WORDS, Order, generate_points};
 pub use table::{Sampler, SamplerName};

@@ -52,6 +52,20 @@ pub enum Error {
         /// The known name nearest to it, when one is close.
         suggestion: Option<&'static str>,
     },
+    /// Generator matrices or direction numbers that cannot make a net.
+    InvalidNet {
+        /// Where they came from: a file name, or the name given to the net.
+        source: alloc::string::String,
+        /// The line of the file (1-based), when the fault is on one.
+        line: Option<usize>,
+        /// What is wrong.
+        reason: alloc::string::String,
+    },
+    /// A generator net given to a sampler that does not read one.
+    NetNotSupported {
+        /// The sampler's name.
+        sampler: &'static str,
+    },
 }
 
 impl fmt::Display for Error {
@@ -92,6 +106,22 @@ impl fmt::Display for Error {
                     None => Ok(()),
                 }
             }
+            Error::InvalidNet {
+                source,
+                line: Some(line),
+                reason,
+            } => write!(f, "{source}:{line}: {reason}"),
+            Error::InvalidNet {
+                source,
+                line: None,
+                reason,
+            } => write!(f, "{source}: {reason}"),
+            Error::NetNotSupported { sampler } => write!(
+                f,
+                "sampler `{sampler}` does not take generator matrices (--net); the Sobol \
+                 samplers do: {}",
+                crate::catalog::net_sampler_list()
+            ),
         }
     }
 }

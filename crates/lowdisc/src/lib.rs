@@ -22,7 +22,8 @@
 //! * Every random choice takes an explicit seed.
 //!
 //! ## Modules
-//! * sequences: [`sobol`] (matrices, points, Gray-code batches), [`sz`] (a
+//! * sequences: [`sobol`] (matrices, points, Gray-code batches), [`net`]
+//!   (any digital net from user-given matrices), [`sz`] (a
 //!   (0,4)-sequence in base 4 as binary columns), [`halton`],
 //!   [`stratified`], [`independent`];
 //! * randomizations: [`scramble`] (digital shift, Owen, fast Owen), [`paper`]
@@ -41,6 +42,7 @@ pub mod error;
 pub mod halton;
 pub mod hash;
 pub mod independent;
+pub mod net;
 #[cfg(test)]
 mod net_check;
 pub mod paper;

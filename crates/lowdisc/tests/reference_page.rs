@@ -31,6 +31,11 @@ fn page() -> String {
         let family = n.family().label();
         out += &format!("| `{n}` | {family} | {} |\n", n.description());
     }
+    out += &format!(
+        "\nThe names that read a generator net instead of Joe & Kuo's matrices\n\
+         (`--net`, see [Any digital net as a sampler](../guide/nets.md)): {}.\n",
+        lowdisc::catalog::net_sampler_list()
+    );
     out += "\n## Families\n\
             \n\
             The family says what `lowdisc points --sampler NAME` prints (the\n\

@@ -137,6 +137,7 @@ pub fn settings(opts: &RenderOptions, film: &FilmParams) -> BTreeMap<String, Str
         paper_all_dims,
         spp,
         resolution: _,
+        net,
     } = sampler;
     let PathIntegrator {
         max_depth,
@@ -169,6 +170,10 @@ pub fn settings(opts: &RenderOptions, film: &FilmParams) -> BTreeMap<String, Str
         ("white_balance", format!("{white_balance:?}")),
     ]
     .into_iter()
+    // The net is recorded by the hash of its matrices (not its file name),
+    // and only when it is
+    // not the built-in Sobol table (so parts from before nets still merge).
+    .chain(net.id().map(|id| ("net", format!("{id:016x}"))))
     .map(|(k, v)| (k.to_string(), v))
     .collect()
 }

@@ -14,6 +14,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use lowdisc::catalog::SamplerConfig;
+use lowdisc::net::Net;
 use lowdisc_experiment::{DEFAULT_SAMPLERS, ExperimentConfig};
 use lowdisc_render::preset::ScenePreset;
 
@@ -84,6 +85,11 @@ pub struct ExperimentArgs {
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = DEFAULT_SAMPLERS,
           long_help = crate::sampler_help::sampler_list("Samplers to compare, comma-separated, of:", ""))]
     samplers: Vec<String>,
+    /// Generator matrices of the compared Sobol samplers (a built-in net:
+    /// `sobol`, `onetwo`; or a file); the reference and the other samplers
+    /// keep theirs [default: sobol].
+    #[arg(long, value_name = "NAME|FILE", long_help = crate::sampler_help::net_help())]
+    net: Option<String>,
     /// Samples per pixel of every compared render [default: 16; --quick: 4].
     #[arg(long, value_name = "N")]
     spp: Option<u32>,
@@ -215,6 +221,7 @@ impl ExperimentArgs {
             emitter_border: self.emitter_border,
             blur_sigma: self.blur_sigma,
             samplers,
+            net: self.net.as_deref().map_or(Ok(Net::SOBOL), parse::net)?,
             spp,
             runs,
             resolution,

@@ -77,6 +77,11 @@ pub struct RenderArgs {
         "[default: the scene's, else zsobol]",
     ))]
     sampler: Option<String>,
+    /// Generator matrices for the Sobol samplers: a built-in net (`sobol`,
+    /// `onetwo`) or a file of Joe-Kuo direction numbers or matrices
+    /// [default: sobol].
+    #[arg(long, value_name = "NAME|FILE", long_help = crate::sampler_help::net_help())]
+    net: Option<String>,
     /// Samples per pixel [default: the scene's, else 16].
     #[arg(long, value_name = "N")]
     spp: Option<u32>,
@@ -225,6 +230,7 @@ impl RenderArgs {
         let weight = self.layered_weight.map(LayeredWeight::exit_weight);
         Ok(SettingsLayer {
             sampler: flag("--sampler", &self.sampler, parse::sampler_name)?,
+            net: flag("--net", &self.net, parse::net)?,
             spp: Given::maybe(self.spp, "--spp"),
             seed: Given::maybe(self.seed, "--seed"),
             threshold: Given::maybe(self.threshold, "--threshold"),

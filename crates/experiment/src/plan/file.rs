@@ -13,6 +13,8 @@
 //!     blur_sigma, samplers: [names], spp, runs, resolution: [w, h],
 //!     ref_spp, conv_max, conv_res: [w, h], conv_ref_spp, envmap: path|null,
 //!     threshold, max_depth, threads: n|null, spectral,
+//!     net: { name, id: "16 hex digits", columns: [[32 words] per
+//!       dimension] } | absent (the built-in Sobol matrices),
 //!     unit_samples: n|null (--unit-samples; null: the default budget),
 //!     command: [args] },
 //!   cached: [main, convergence]  (references cached when planned: no units),
@@ -45,6 +47,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use lowdisc::catalog::SamplerName;
+use lowdisc::net::{DigitalNet, Net};
 use lowdisc_render::preset::ScenePreset;
 use serde::{Deserialize, Serialize};
 
@@ -93,8 +96,44 @@ struct Settings {
     /// `--approximate`; absent in plans that predate it.
     #[serde(default)]
     approximate: bool,
+    /// `--net`'s matrices; absent for the built-in Sobol table.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    net: Option<NetDoc>,
     unit_samples: Option<u64>,
     command: Vec<String>,
+}
+
+/// A net written out in full, so units need no file of its own.
+#[derive(Debug, Serialize, Deserialize)]
+struct NetDoc {
+    name: String,
+    id: String,
+    columns: Vec<[u32; 32]>,
+}
+
+impl NetDoc {
+    /// The document of `net`, `None` for the built-in table.
+    fn of(net: Net) -> Option<NetDoc> {
+        net.id().map(|id| NetDoc {
+            name: net.name().to_string(),
+            id: format!("{id:016x}"),
+            columns: net.columns().to_vec(),
+        })
+    }
+
+    /// The net again, checked against its recorded id.
+    fn net(self) -> Result<Net> {
+        let net = DigitalNet::from_columns(&self.name, self.columns)?;
+        let id = format!("{:016x}", net.id());
+        if id != self.id {
+            bail!(
+                "net `{}`: the matrices hash to {id}, not the recorded {}",
+                self.name,
+                self.id
+            );
+        }
+        Ok(net.into_net())
+    }
 }
 
 #[derive(Debug, Serialize, Deserialize)]
@@ -272,6 +311,7 @@ fn settings(c: &ExperimentConfig) -> Settings {
         threads: c.threads,
         spectral: c.spectral,
         approximate: c.approximate,
+        net: NetDoc::of(c.net),
         unit_samples: c.unit_samples,
         command: c.command.clone(),
     }
@@ -294,6 +334,7 @@ fn config(s: Settings, out: &Path) -> Result<ExperimentConfig> {
             .iter()
             .map(|n| sampler(n))
             .collect::<Result<_>>()?,
+        net: s.net.map_or(Ok(Net::SOBOL), NetDoc::net)?,
         spp: s.spp,
         runs: s.runs,
         resolution: s.resolution,

@@ -145,11 +145,19 @@ impl Unit {
     /// What its render asks for beyond the experiment's own settings
     /// ([`ExperimentConfig::settings`]): its sampler, seed and spp, a sweep
     /// render's threshold, a piece's sample range (its window depends on
-    /// the film, see [`Piece::window`]), each named by where it comes from.
+    /// the film, see [`Piece::window`]), the experiment's net for a
+    /// compared sampler that reads one (never for a reference or the
+    /// sweep), each named by where it comes from.
     pub fn settings(&self, config: &ExperimentConfig) -> SettingsLayer {
         let (sampler, seed, spp) = self.render(config);
         let threshold = match self.work {
             Work::Sweep { threshold, .. } => Some(threshold),
+            _ => None,
+        };
+        let net = match self.work {
+            Work::Run { .. } | Work::Convergence { .. } if sampler.takes_net() => {
+                Some(config.net.clone())
+            }
             _ => None,
         };
         let piece = self.work.piece();
@@ -162,6 +170,7 @@ impl Unit {
             spp: Some(Given::new(spp, &from)),
             threshold: Given::maybe(threshold, &from),
             samples: Given::maybe(samples, &from),
+            net: Given::maybe(net, "--net"),
             ..SettingsLayer::default()
         }
     }

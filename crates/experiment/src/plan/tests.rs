@@ -14,6 +14,7 @@ fn config() -> ExperimentConfig {
     ExperimentConfig {
         scene: None,
         samplers: vec![SamplerName::Sobol, SamplerName::Halton],
+        net: lowdisc::net::Net::SOBOL,
         spp: 4,
         runs: 3,
         resolution: [10, 10],
@@ -141,6 +142,38 @@ fn plan_json_reads_back_to_the_same_plan_and_id() {
     assert_eq!(back.plan.config.blur_sigma, 1.1);
     assert_eq!(back.plan.config.out, Path::new("elsewhere"));
     assert_eq!(back.to_json().unwrap(), text);
+}
+
+#[test]
+fn a_net_is_written_in_full_and_read_back_for_the_compared_samplers_only() {
+    let mut c = config();
+    c.samplers = vec![SamplerName::ZSobol, SamplerName::Halton];
+    c.net = lowdisc::net::Net::named("onetwo").unwrap();
+    let file = PlanFile::new(Plan::new(c, 1, [false, true]), "/w".into()).unwrap();
+    let text = file.to_json().unwrap();
+    let back = PlanFile::parse(&text, Path::new("d")).unwrap();
+    assert_eq!(back.plan.config.net, file.plan.config.net);
+    assert_eq!(back.id, file.id);
+    let nets: Vec<_> = back
+        .plan
+        .units
+        .iter()
+        .map(|u| u.options(&back.plan.config).unwrap().sampler)
+        .map(|s| (s.name, s.net.is_sobol()))
+        .collect();
+    assert!(nets.contains(&(SamplerName::ZSobol, false)));
+    assert!(nets.contains(&(SamplerName::Halton, true)));
+    assert!(
+        nets.contains(&(SamplerName::SobolOwen, true)),
+        "the reference"
+    );
+    assert!(
+        nets.iter()
+            .all(|&(n, sobol)| sobol != (n == SamplerName::ZSobol))
+    );
+    // A column changed: the matrices no longer hash to the recorded id.
+    let edited = text.replacen("2147483648", "2147483649", 1);
+    assert!(PlanFile::parse(&edited, Path::new("d")).is_err());
 }
 
 #[test]

@@ -32,6 +32,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 use lowdisc::catalog::{SamplerConfig, SamplerName};
+use lowdisc::net::Net;
 use lowdisc_image::{PixelMask, RgbImage};
 use lowdisc_metrics::{NyquistPower, SpectralPeak};
 use lowdisc_render::preset::ScenePreset;
@@ -83,6 +84,8 @@ pub struct StudyConfig {
     pub scenes: Vec<StudyScene>,
     /// The samplers, in table order (the baselines among them).
     pub samplers: Vec<SamplerName>,
+    /// The generator matrices of the samplers that read a net (`--net`).
+    pub net: Net,
     /// The samplers the ratios are relative to: every sampler gets its
     /// ratios to each; the first is the main tables' baseline.
     pub baselines: Vec<SamplerName>,
@@ -153,6 +156,7 @@ impl StudyConfig {
             emitter_border: DEFAULT_EMITTER_BORDER,
             blur_sigma: DEFAULT_BLUR_SIGMA,
             samplers: self.samplers.clone(),
+            net: self.net,
             spp: self.spp,
             runs: self.runs,
             resolution: self.resolution,
@@ -420,6 +424,7 @@ mod tests {
         StudyConfig {
             scenes,
             samplers: vec![SamplerName::Independent, SamplerName::Sobol],
+            net: Net::SOBOL,
             baselines: vec![SamplerName::Sobol],
             spp: 2,
             runs: 2,

@@ -4,6 +4,7 @@
 use super::params::Params;
 use super::table::{Sampler, SamplerName};
 use crate::Error;
+use crate::net::Net;
 use crate::paper::check_threshold;
 
 /// The largest image side a configuration accepts.
@@ -25,6 +26,10 @@ pub struct SamplerConfig {
     pub spp: u32,
     /// Image width and height in pixels.
     pub resolution: [u32; 2],
+    /// The generator matrices of the samplers that read them
+    /// ([`super::NET_SAMPLERS`]); [`Net::SOBOL`], the default, is the
+    /// built-in Sobol table, and any other net is refused by the others.
+    pub net: Net,
 }
 
 impl SamplerConfig {
@@ -42,13 +47,16 @@ impl SamplerConfig {
             paper_all_dims: false,
             spp: 16,
             resolution: [2, 2],
+            net: Net::SOBOL,
         }
     }
 
     /// Checks the fields every sampler needs: `spp >= 1`, a threshold in
-    /// `[0, 1]` (NaN rejected), sides in `1..=MAX_RESOLUTION`.
+    /// `[0, 1]` (NaN rejected), sides in `1..=MAX_RESOLUTION`, and no net
+    /// other than [`Net::SOBOL`] for a sampler that does not read one.
     pub fn validate(&self) -> Result<(), Error> {
         crate::pixel::check_spp(self.spp)?;
+        self.validate_net()?;
         check_threshold(self.threshold)?;
         let [w, h] = self.resolution;
         if w == 0 || h == 0 || w > MAX_RESOLUTION || h > MAX_RESOLUTION {
@@ -59,6 +67,17 @@ impl SamplerConfig {
             });
         }
         Ok(())
+    }
+
+    /// Refuses a net other than [`Net::SOBOL`] for a sampler that does not
+    /// read one.
+    pub fn validate_net(&self) -> Result<(), Error> {
+        if self.net.is_sobol() || self.name.takes_net() {
+            return Ok(());
+        }
+        Err(Error::NetNotSupported {
+            sampler: self.name.as_str(),
+        })
     }
 
     /// Builds the pixel sampler, validating every field and the index range
@@ -87,6 +106,7 @@ impl SamplerConfig {
             seed: self.seed,
             threshold: self.threshold,
             paper_all_dims: self.paper_all_dims,
+            net: self.net,
         }
     }
 }

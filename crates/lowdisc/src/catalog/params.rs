@@ -2,6 +2,7 @@
 //! checked fields of a [`super::SamplerConfig`] without the name.
 
 use crate::Error;
+use crate::net::Net;
 use crate::pixel::{GlobalSobolMode, GlobalSobolSampler};
 
 /// The settings a table entry builds its sampler from.
@@ -17,11 +18,13 @@ pub(crate) struct Params {
     pub threshold: f64,
     /// Let the paper permutation act on dimensions 0-1 too.
     pub paper_all_dims: bool,
+    /// The generator matrices of the samplers that read them.
+    pub net: Net,
 }
 
 impl Params {
     /// The global Sobol sampler in `mode` with these settings.
     pub fn global_sobol(&self, mode: GlobalSobolMode) -> Result<GlobalSobolSampler, Error> {
-        GlobalSobolSampler::new(self.spp, self.resolution, mode, self.seed)
+        GlobalSobolSampler::with_net(self.spp, self.resolution, mode, self.seed, self.net)
     }
 }

@@ -2,8 +2,8 @@
 //! words (`floor(x * 2^32)`), point-major, made as the name's [`Family`]
 //! says:
 //!
-//! * [`Family::Sobol`]: the Sobol sequence with that randomization (seeded
-//!   by the config seed). [`Order::Gray`] is the order of Joe & Kuo's
+//! * [`Family::Sobol`]: the Sobol sequence (or the config's net, see
+//!   [`crate::net`]) with that randomization (seeded by the config seed). [`Order::Gray`] is the order of Joe & Kuo's
 //!   generator and `scipy.stats.qmc.Sobol` (point `k` is natural point
 //!   `gray_code(k)`); [`Order::Natural`] is `sobol::sample(k, d)`.
 //! * [`Family::PaperLiteral`]: the literal permuted Sobol over the same
@@ -33,7 +33,7 @@ use crate::halton::Halton;
 use crate::independent::Independent;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::pixel::WordSampler;
-use crate::sobol::{GrayCodeBatch, gray_code, sample_randomized};
+use crate::sobol::{GrayCodeBatch, gray_code};
 use crate::{Error, RandomizeStrategy, stratified};
 
 /// The most words one call may return (`n * dims.len()`), 1 GiB of output.
@@ -51,8 +51,8 @@ pub enum Order {
 
 /// The first `n` points of `config.name`'s sequence in dimensions `dims`,
 /// point-major (`out[k * dims.len() + j]` is dimension `dims.start + j` of
-/// point `k`); see the module documentation. Only `name`, `seed` and
-/// `threshold` of the config are used.
+/// point `k`); see the module documentation. Only `name`, `seed`,
+/// `threshold` and `net` of the config are used.
 pub fn generate_points(
     config: &SamplerConfig,
     n: u32,
@@ -66,7 +66,11 @@ pub fn generate_points(
             reason: "at least one point is needed",
         });
     }
-    let available = family.dimensions();
+    config.validate_net()?;
+    let available = match family {
+        f if f.is_sobol() => u64::from(config.net.dimensions()),
+        f => f.dimensions(),
+    };
     if dims.is_empty() || u64::from(dims.end) > available {
         let dimension = if dims.is_empty() {
             dims.start
@@ -93,7 +97,7 @@ pub fn generate_points(
     };
     let mut out = Vec::with_capacity(n as usize * width);
     match family {
-        Family::Sobol(RandomizeStrategy::None) if order == Order::Gray => {
+        Family::Sobol(RandomizeStrategy::None) if order == Order::Gray && config.net.is_sobol() => {
             let mut batch = GrayCodeBatch::new(dims.start, width as u32)?;
             out.resize(n as usize * width, 0);
             batch.fill(&mut out);
@@ -102,7 +106,7 @@ pub fn generate_points(
             for k in 0..n {
                 out.extend(
                     dims.clone()
-                        .map(|d| sample_randomized(index(k), d, r, seed)),
+                        .map(|d| r.apply(config.net.sample(index(k), d), seed, d)),
                 );
             }
         }

@@ -80,16 +80,16 @@ sampler_table! {
     words PaddedSobol(PaddedSobolSampler) {
         PaddedSobol "padded-sobol", Family::PerPixel,
             "pbrt-v4 padded per-pixel Owen-scrambled Sobol",
-            |p| PaddedSobolSampler::new(p.spp, Owen, p.seed);
+            |p| PaddedSobolSampler::with_net(p.spp, Owen, p.seed, p.net);
         PaddedSobolLms "padded-sobol-lms", Family::PerPixel,
             "padded per-pixel Sobol with LMS + digital shift",
-            |p| PaddedSobolSampler::new(p.spp, Lms, p.seed);
+            |p| PaddedSobolSampler::with_net(p.spp, Lms, p.seed, p.net);
     }
     /// Z-order blue-noise Sobol (pbrt-v4's default).
     words ZSobol(ZSobolSampler) {
         ZSobol "zsobol", Family::PerPixel,
             "pbrt-v4 Z-order blue-noise Sobol (Ahmed & Wonka 2020)",
-            |p| ZSobolSampler::new(p.spp, p.resolution, FastOwen, p.seed);
+            |p| ZSobolSampler::with_net(p.spp, p.resolution, FastOwen, p.seed, p.net);
     }
     /// Burley 2020: shuffled, Owen-scrambled, 4-D padded per-pixel Sobol.
     words Burley(BurleySampler) {
@@ -119,13 +119,13 @@ sampler_table! {
     words ZSobolJoint(ZSobolJointSampler) {
         ZSobol4d "zsobol-4d", Family::PerPixel,
             "Z-order Sobol padded by 4-D groups in Burley's order",
-            |p| ZSobolJointSampler::new(
-                p.spp, p.resolution, GroupLayout::Sequential, FastOwen, p.seed,
+            |p| ZSobolJointSampler::with_net(
+                p.spp, p.resolution, GroupLayout::Sequential, FastOwen, p.seed, p.net,
             );
         ZSobolJoint "zsobol-joint", Family::PerPixel,
             "Z-order Sobol padded by 4-D groups aligned with the path tracer's vertices",
-            |p| ZSobolJointSampler::new(
-                p.spp, p.resolution, GroupLayout::PathVertices, FastOwen, p.seed,
+            |p| ZSobolJointSampler::with_net(
+                p.spp, p.resolution, GroupLayout::PathVertices, FastOwen, p.seed, p.net,
             );
     }
     /// Z-order over the base-4 (0,4)-sequence, film and light sample in 5-D.

@@ -48,9 +48,10 @@ use alloc::boxed::Box;
 
 use super::{SEED_PAD, WordSampler};
 use crate::hash::{hash_words, hash2};
+use crate::net::Net;
 use crate::paper::{PaperLiteral, check_threshold, paper_reproducible};
 use crate::scramble::{PreparedKey, ScrambleCache, dimension_seed};
-use crate::sobol::{NUM_DIMENSIONS, matrix, sample};
+use crate::sobol::sample;
 use crate::{Error, RandomizeStrategy};
 
 /// How a [`GlobalSobolSampler`] turns Sobol points into values.
@@ -90,6 +91,8 @@ pub struct GlobalSobolSampler {
     inverse: [u32; 32],
     mode: GlobalSobolMode,
     seed: u64,
+    /// The generator matrices (always [`Net::SOBOL`] in the paper modes).
+    net: Net,
     /// The randomizations of the Randomize modes, with their hashing kept
     /// (boxed: the sampler enum stays small).
     scrambles: Box<Scrambles>,
@@ -129,10 +132,10 @@ fn top_digits(word: u32, k: u32) -> u32 {
 
 /// Solves the pixel-placement system: `inverse[j]` is the combination of the
 /// low `2k` index bits whose top digits equal target vector `1 << j`.
-fn build_inverse(k: u32) -> Option<[u32; 32]> {
+fn build_inverse(net: Net, k: u32) -> Option<[u32; 32]> {
     let n = (2 * k) as usize;
     // Pairs (target digits produced, index bits used), one per index bit.
-    let (m0, m1) = (matrix(0), matrix(1));
+    let (m0, m1) = (net.matrix(0), net.matrix(1));
     let mut rows: [(u64, u32); 32] = [(0, 0); 32];
     for (c, row) in rows.iter_mut().enumerate().take(n) {
         let t = u64::from(top_digits(m0[c], k)) | (u64::from(top_digits(m1[c], k)) << k);
@@ -166,7 +169,43 @@ impl GlobalSobolSampler {
         mode: GlobalSobolMode,
         seed: u64,
     ) -> Result<Self, Error> {
+        Self::with_net(spp, resolution, mode, seed, Net::SOBOL)
+    }
+
+    /// [`GlobalSobolSampler::new`] with the generator matrices of `net` in
+    /// place of Sobol's (the same sampler for [`Net::SOBOL`]): dimensions
+    /// 0-1 place the pixel, so their top digits must be jointly
+    /// nonsingular at the image's resolution, and sampler dimension `d`
+    /// reads dimension `2 + d % (n - 2)` of the `n >= 3`. The paper modes
+    /// permute Sobol itself and take [`Net::SOBOL`] only.
+    ///
+    /// ```
+    /// use lowdisc::RandomizeStrategy;
+    /// use lowdisc::net::{DigitalNet, Net};
+    /// use lowdisc::pixel::{GlobalSobolMode, GlobalSobolSampler, WordSampler};
+    ///
+    /// let columns = (0..3).map(|d| *lowdisc::sobol::matrix(d)).collect();
+    /// let net = DigitalNet::from_columns("three", columns)?.into_net();
+    /// let mode = GlobalSobolMode::Randomize(RandomizeStrategy::Owen);
+    /// let mut a = GlobalSobolSampler::with_net(4, [8, 8], mode, 1, net)?;
+    /// let mut b = GlobalSobolSampler::new(4, [8, 8], mode, 1)?;
+    /// a.start_pixel_sample([3, 5], 2, 0);
+    /// b.start_pixel_sample([3, 5], 2, 0);
+    /// assert_eq!(a.get_1d_word(), b.get_1d_word());
+    /// # Ok::<(), lowdisc::Error>(())
+    /// ```
+    pub fn with_net(
+        spp: u32,
+        resolution: [u32; 2],
+        mode: GlobalSobolMode,
+        seed: u64,
+        net: Net,
+    ) -> Result<Self, Error> {
         super::check_spp(spp)?;
+        if !net.is_sobol() && !matches!(mode, GlobalSobolMode::Randomize(_)) {
+            return Err(Error::NetNotSupported { sampler: "paper" });
+        }
+        net.require(3, "the global image-plane sampler")?;
         let [w, h] = super::check_resolution(resolution)?;
         let log2_res = super::ceil_log2(u64::from(w.max(h)));
         if log2_res > 16 {
@@ -182,10 +221,10 @@ impl GlobalSobolSampler {
                 reason: "R^2 * spp exceeds the 2^32 Sobol indices (R = resolution rounded up to a power of two)",
             });
         }
-        let inverse = build_inverse(log2_res).ok_or(Error::InvalidResolution {
+        let inverse = build_inverse(net, log2_res).ok_or(Error::InvalidResolution {
             width: w,
             height: h,
-            reason: "Sobol dimensions 0-1 are singular at this resolution",
+            reason: "dimensions 0-1 of the net are singular at this resolution",
         })?;
         let mut literal = None;
         let mut dims_strategy = RandomizeStrategy::None;
@@ -205,6 +244,7 @@ impl GlobalSobolSampler {
             inverse,
             mode,
             seed,
+            net,
             scrambles: Box::new(Scrambles {
                 dims: ScrambleCache::new(dims_strategy, hash2(seed, SEED_PAD)),
                 offset: OffsetScramble {
@@ -268,7 +308,9 @@ impl GlobalSobolSampler {
         } else {
             (u64::from(sample_index) << (2 * k)) as u32
         };
-        let high_top = top_digits(sample(high, 0), k) | (top_digits(sample(high, 1), k) << k);
+        let net = self.net;
+        let high_top =
+            top_digits(net.sample(high, 0), k) | (top_digits(net.sample(high, 1), k) << k);
         let target = (pixel[0] & mask) | ((pixel[1] & mask) << k);
         let mut rest = target ^ high_top;
         let mut low = 0u32;
@@ -279,18 +321,19 @@ impl GlobalSobolSampler {
         high | low
     }
 
-    /// The Sobol dimension used for sampler dimension `d` (wrapping past the
-    /// table's end back to dimension 2).
-    fn sobol_dim(d: u32) -> u32 {
-        2 + d % (NUM_DIMENSIONS as u32 - 2)
+    /// The net's dimension used for sampler dimension `d` (wrapping past
+    /// its last dimension back to dimension 2).
+    fn sobol_dim(&self, d: u32) -> u32 {
+        2 + d % (self.net.dimensions() - 2)
     }
 
     /// The digit word of sampler dimension `d` at the current index.
     fn value(&mut self, d: u32) -> u32 {
-        let dim = Self::sobol_dim(d);
+        let dim = self.sobol_dim(d);
         match self.mode {
             GlobalSobolMode::Randomize(_) => {
-                self.scrambles.dims.apply(sample(self.index, dim), dim)
+                let word = self.net.sample(self.index, dim);
+                self.scrambles.dims.apply(word, dim)
             }
             GlobalSobolMode::PaperLiteral { .. } => match self.literal.as_mut() {
                 Some(stream) => stream.sample(self.index, dim),
@@ -318,7 +361,7 @@ impl GlobalSobolSampler {
                 paper_reproducible(index, 0, threshold, self.seed),
                 paper_reproducible(index, 1, threshold, self.seed),
             ],
-            _ => [sample(index, 0), sample(index, 1)],
+            _ => [self.net.sample(index, 0), self.net.sample(index, 1)],
         };
         let offset = raw.map(|w| w << k);
         match self.mode {

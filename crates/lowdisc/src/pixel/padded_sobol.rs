@@ -31,8 +31,8 @@ use alloc::vec::Vec;
 
 use super::{SEED_PAD, WordSampler};
 use crate::hash::{WordHasher, hash_words, mix64};
+use crate::net::Net;
 use crate::scramble::{PreparedKey, dimension_seed};
-use crate::sobol::sample;
 use crate::{Error, RandomizeStrategy};
 
 /// Dimension key of the in-pixel offset (above every `u32` dimension).
@@ -140,6 +140,8 @@ pub struct PaddedSobolSampler {
     spp: u32,
     strategy: RandomizeStrategy,
     seed: u64,
+    /// The generator matrices (dimensions 0-1 are read).
+    net: Net,
     pixel: [u32; 2],
     sample_index: u32,
     dimension: u32,
@@ -151,11 +153,24 @@ impl PaddedSobolSampler {
     /// A sampler with `spp` samples per pixel (any `spp >= 1`), scrambled
     /// by `strategy` under `seed`.
     pub fn new(spp: u32, strategy: RandomizeStrategy, seed: u64) -> Result<Self, Error> {
+        Self::with_net(spp, strategy, seed, Net::SOBOL)
+    }
+
+    /// [`PaddedSobolSampler::new`] reading dimensions 0-1 of `net` in
+    /// place of Sobol's (the same sampler for [`Net::SOBOL`]).
+    pub fn with_net(
+        spp: u32,
+        strategy: RandomizeStrategy,
+        seed: u64,
+        net: Net,
+    ) -> Result<Self, Error> {
         super::check_spp(spp)?;
+        net.require(2, "a padded sampler")?;
         Ok(PaddedSobolSampler {
             spp,
             strategy,
             seed,
+            net,
             pixel: [0, 0],
             sample_index: 0,
             dimension: 0,
@@ -189,7 +204,10 @@ impl PaddedSobolSampler {
     fn direct_words<const N: usize>(&self, key: u64) -> [u32; N] {
         let h = self.hash(key);
         let index = permutation_element(self.sample_index, self.spp, mix64(h));
-        core::array::from_fn(|d| self.strategy.apply(sample(index, d as u32), h, d as u32))
+        core::array::from_fn(|d| {
+            let word = self.net.sample(index, d as u32);
+            self.strategy.apply(word, h, d as u32)
+        })
     }
 
     /// As [`PaddedSobolSampler::direct_words`], through the caches.
@@ -211,7 +229,7 @@ impl PaddedSobolSampler {
         let entry = &self.cache.entries[slot];
         let index = entry.permutation.element(self.sample_index);
         core::array::from_fn(|d| {
-            let word = sample(index, d as u32);
+            let word = self.net.sample(index, d as u32);
             match self.cache.prepared.get(slot) {
                 Some(keys) => keys[d].scramble(word),
                 None => self.strategy.apply_dimension_seed(word, entry.seeds[d]),

@@ -52,7 +52,7 @@ use self::cache::Cache;
 use self::entry::Layout;
 use super::{Dims, SEED_PAD, WordSampler};
 use crate::hash::hash_words;
-use crate::sobol::sample;
+use crate::net::Net;
 use crate::{Error, RandomizeStrategy, reversed_to_f32, to_f32};
 
 /// All 24 permutations of `{0, 1, 2, 3}` in lexicographic order.
@@ -129,7 +129,35 @@ impl ZSobolSampler {
         strategy: RandomizeStrategy,
         seed: u64,
     ) -> Result<Self, Error> {
+        Self::with_net(spp, resolution, strategy, seed, Net::SOBOL)
+    }
+
+    /// [`ZSobolSampler::new`] reading dimensions 0-1 of `net` in place of
+    /// Sobol's (the same sampler for [`Net::SOBOL`]).
+    ///
+    /// ```
+    /// use lowdisc::RandomizeStrategy;
+    /// use lowdisc::net::{DigitalNet, Net};
+    /// use lowdisc::pixel::{WordSampler, ZSobolSampler};
+    ///
+    /// let text = "d s a m_i\n2 1 0 1\n";
+    /// let net = DigitalNet::from_joe_kuo("two.txt", text)?.into_net();
+    /// let mut a = ZSobolSampler::with_net(16, [4, 4], RandomizeStrategy::FastOwen, 7, net)?;
+    /// let mut b = ZSobolSampler::new(16, [4, 4], RandomizeStrategy::FastOwen, 7)?;
+    /// a.start_pixel_sample([1, 2], 5, 0);
+    /// b.start_pixel_sample([1, 2], 5, 0);
+    /// assert_eq!(a.get_2d_words(), b.get_2d_words());
+    /// # Ok::<(), lowdisc::Error>(())
+    /// ```
+    pub fn with_net(
+        spp: u32,
+        resolution: [u32; 2],
+        strategy: RandomizeStrategy,
+        seed: u64,
+        net: Net,
+    ) -> Result<Self, Error> {
         super::check_spp(spp)?;
+        net.require(2, "a Z-order sampler")?;
         let [w, h] = super::check_resolution(resolution)?;
         let log2_spp = super::ceil_log2(u64::from(spp));
         let log2_res = super::ceil_log2(u64::from(w.max(h)));
@@ -151,6 +179,7 @@ impl ZSobolSampler {
             strategy,
             log2_spp,
             base4_digits: log2_res + log2_spp.div_ceil(2),
+            net,
         };
         Ok(ZSobolSampler {
             spp,
@@ -216,7 +245,7 @@ impl ZSobolSampler {
         let index = self.sample_index(key);
         let seed = self.randomizer_seed(key, index >> 32);
         core::array::from_fn(|d| {
-            let word = sample(index as u32, d as u32);
+            let word = self.cache.net().sample(index as u32, d as u32);
             self.strategy.apply(word, seed, d as u32)
         })
     }
@@ -224,6 +253,11 @@ impl ZSobolSampler {
     /// The randomization strategy given at construction.
     pub fn strategy(&self) -> RandomizeStrategy {
         self.strategy
+    }
+
+    /// The generator matrices given at construction.
+    pub fn net(&self) -> Net {
+        self.cache.net()
     }
 
     /// The Morton index of the current pixel sample (before permutation).

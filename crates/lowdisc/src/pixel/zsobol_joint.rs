@@ -42,7 +42,7 @@
 
 use super::group_cache::GroupCache;
 use super::{WordSampler, ZSobolSampler};
-use crate::sobol::sample;
+use crate::net::Net;
 use crate::{Error, RandomizeStrategy};
 
 /// Dimension key of group 0 (groups are `GROUP_KEY + g`); above `zsobol`'s
@@ -104,8 +104,22 @@ impl ZSobolJointSampler {
         strategy: RandomizeStrategy,
         seed: u64,
     ) -> Result<Self, Error> {
+        Self::with_net(spp, resolution, layout, strategy, seed, Net::SOBOL)
+    }
+
+    /// [`ZSobolJointSampler::new`] reading dimensions 0-3 of `net` in place
+    /// of Sobol's (the same sampler for [`Net::SOBOL`]).
+    pub fn with_net(
+        spp: u32,
+        resolution: [u32; 2],
+        layout: GroupLayout,
+        strategy: RandomizeStrategy,
+        seed: u64,
+        net: Net,
+    ) -> Result<Self, Error> {
+        net.require(4, "a sampler padded by 4-D groups")?;
         Ok(ZSobolJointSampler {
-            order: ZSobolSampler::new(spp, resolution, strategy, seed)?,
+            order: ZSobolSampler::with_net(spp, resolution, strategy, seed, net)?,
             layout,
             strategy,
             seed,
@@ -118,7 +132,7 @@ impl ZSobolJointSampler {
     fn word(&mut self, (group, lane): (u64, u32)) -> u32 {
         let key = GROUP_KEY + group;
         let index = self.cache.index(&self.order, group, key);
-        let word = sample(index as u32, lane);
+        let word = self.order.net().sample(index as u32, lane);
         self.cache
             .scramble(self.strategy, self.seed, (group, key), index, lane, word)
     }
@@ -157,6 +171,7 @@ impl WordSampler for ZSobolJointSampler {
 mod tests {
     use super::*;
     use crate::net_check::{shapes, stratified, t_value};
+    use crate::sobol::sample;
     use alloc::vec::Vec;
 
     const LAYOUTS: [GroupLayout; 2] = [GroupLayout::Sequential, GroupLayout::PathVertices];

@@ -17,6 +17,12 @@ pub(crate) fn table() -> &'static [[u32; 32]] {
     bytemuck::cast_slice(&RAW.0)
 }
 
+/// Every dimension's generator matrix ([`matrix`] of each).
+#[inline]
+pub fn matrices() -> &'static [[u32; 32]] {
+    table()
+}
+
 /// The generator matrix of dimension `dim`: column `c` is the digit word
 /// contributed by bit `c` of the index (bit 31 = first digit after the point).
 ///

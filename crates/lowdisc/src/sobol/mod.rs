@@ -14,7 +14,7 @@ mod gray;
 mod matrices;
 
 pub use gray::{GrayCodeBatch, gray_code};
-pub use matrices::{NUM_DIMENSIONS, matrix};
+pub use matrices::{NUM_DIMENSIONS, matrices, matrix};
 
 use crate::RandomizeStrategy;
 

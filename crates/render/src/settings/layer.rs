@@ -7,6 +7,7 @@ use super::sample_range::SampleRange;
 use crate::bsdf::LayeredExitWeight;
 use crate::film::PixelBounds;
 use lowdisc::catalog::SamplerName;
+use lowdisc::net::Net;
 
 /// A value and where it was given: a flag (`--spp`) or a scene file's
 /// directive (`scene.pbrt:3:1: Sampler "pixelsamples"`).
@@ -40,6 +41,8 @@ impl<T> Given<T> {
 pub struct SettingsLayer {
     /// The pixel sampler.
     pub sampler: Option<Given<SamplerName>>,
+    /// The generator matrices of the Sobol samplers (`--net`).
+    pub net: Option<Given<Net>>,
     /// Samples per pixel.
     pub spp: Option<Given<u32>>,
     /// Seed of every random choice.

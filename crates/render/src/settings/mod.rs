@@ -73,8 +73,14 @@ impl Settings {
             threshold: value(&l.threshold, ds.threshold),
             paper_all_dims: value(&l.paper_all_dims, ds.paper_all_dims),
             spp: value(&l.spp, ds.spp),
+            net: value(&l.net, ds.net),
             ..ds
         };
+        if let Some(g) = &l.net {
+            sampler
+                .validate_net()
+                .map_err(|e| RenderError::InvalidOptions(format!("{}: {e}", g.from)))?;
+        }
         let integrator = PathIntegrator {
             max_depth: value(&l.max_depth, di.max_depth),
             layered_exit_weight: value(&l.layered_exit_weight, di.layered_exit_weight),
@@ -114,6 +120,7 @@ fn chosen(layers: &[&SettingsLayer]) -> SettingsLayer {
     }
     SettingsLayer {
         sampler: last(layers, |l| &l.sampler),
+        net: last(layers, |l| &l.net),
         spp: last(layers, |l| &l.spp),
         seed: last(layers, |l| &l.seed),
         threshold: last(layers, |l| &l.threshold),

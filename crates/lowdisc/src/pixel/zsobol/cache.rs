@@ -42,10 +42,10 @@ use super::entry::{Entry, Layout, NO_TAG, TOP_LEN, top_digits};
 use super::{LOW_BIT_SALT, PIXEL_KEY};
 use crate::RandomizeStrategy;
 use crate::hash::{hash_words, mix64};
+use crate::net::Net;
 use crate::pixel::Dims;
 use crate::pixel::SEED_PAD;
 use crate::scramble::fast_owen_hash;
-use crate::sobol::sample;
 
 /// Dimension keys below this are cached (slot `1 + key`; slot 0 is the
 /// pixel key).
@@ -97,14 +97,14 @@ impl Cache {
         let mut lower_words = Box::new([0; LOWER_LEN]);
         if m <= LOWER_TABLE_BITS {
             for (i, w) in lower_words.iter_mut().take(1 << m).enumerate() {
-                *w = packed_reversed_words(i as u32);
+                *w = packed_reversed_words(layout.net, i as u32);
             }
         }
         let digit_words = (0..layout.pixel_digits())
             .map(|i| {
                 let shift = m + 2 * i;
                 core::array::from_fn(|d| match shift {
-                    0..32 => packed_reversed_words((d as u32) << shift),
+                    0..32 => packed_reversed_words(layout.net, (d as u32) << shift),
                     _ => 0,
                 })
             })
@@ -127,6 +127,11 @@ impl Cache {
             lower_words,
             digit_words,
         }
+    }
+
+    /// The generator matrices.
+    pub(super) fn net(&self) -> Net {
+        self.layout.net
     }
 
     /// Starts the sample at Morton index `morton`.
@@ -235,7 +240,7 @@ impl Cache {
         let lower_words = if m <= LOWER_TABLE_BITS {
             self.lower_words[lower as usize & (LOWER_LEN - 1)]
         } else {
-            packed_reversed_words(lower as u32)
+            packed_reversed_words(self.layout.net, lower as u32)
         };
         let entry = &self.entries[slot];
         let words = entry.upper_words ^ lower_words;
@@ -310,9 +315,10 @@ fn cached_slot(key: u64) -> Option<usize> {
     }
 }
 
-/// Sobol dimensions 0 (low half) and 1 (high half) of `index`, bit-reversed.
-fn packed_reversed_words(index: u32) -> u64 {
-    let [a, b] = [sample(index, 0), sample(index, 1)].map(u32::reverse_bits);
+/// Dimensions 0 (low half) and 1 (high half) of `index` in `net`,
+/// bit-reversed.
+fn packed_reversed_words(net: Net, index: u32) -> u64 {
+    let [a, b] = [net.sample(index, 0), net.sample(index, 1)].map(u32::reverse_bits);
     u64::from(a) | (u64::from(b) << 32)
 }
 

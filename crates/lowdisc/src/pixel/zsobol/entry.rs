@@ -4,6 +4,7 @@
 //! (`digits.rs`) fill entries and the cache reads them.
 
 use crate::RandomizeStrategy;
+use crate::net::Net;
 
 /// [`Entry::tag`] of an entry the fast path must not use.
 pub(super) const NO_TAG: u64 = u64::MAX;
@@ -19,6 +20,8 @@ pub(super) struct Layout {
     pub log2_spp: u32,
     /// Base-4 digits of the index (above the odd low bit, if any).
     pub base4_digits: u32,
+    /// The generator matrices (dimensions 0-1 are read).
+    pub net: Net,
 }
 
 impl Layout {
