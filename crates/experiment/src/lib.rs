@@ -16,6 +16,7 @@
 //! - [`cut`]: a large render cut into pieces (bands x sample ranges) and
 //!   joined again, exactly;
 //! - [`estimate`]: the estimate of a one-machine run's time;
+//! - [`eta`]: the time left of a stage and of the whole run;
 //! - [`reference`](mod@reference): the converged reference renders, cached on disk;
 //! - [`run`](mod@run): the one-machine run: every unit rendered in-process;
 //! - [`source`]: the units' renders as the assembly reads them, and the
@@ -99,6 +100,7 @@ pub mod comparison;
 pub mod config;
 pub mod cut;
 pub mod estimate;
+pub mod eta;
 pub mod figure;
 pub mod metrics;
 pub mod plan;
@@ -121,5 +123,5 @@ pub mod units;
 pub use assemble::Outcome;
 pub use assemble::assemble;
 pub use config::{DEFAULT_SAMPLERS, ExperimentConfig, REF_SAMPLER, REF_SEED};
-pub use progress::{Estimate, Progress, Silent};
+pub use progress::{Done, Estimate, Progress, Silent};
 pub use run::run;
