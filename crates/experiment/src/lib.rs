@@ -67,7 +67,8 @@
 //!   [`comparison`]), runs: [{seed, time_s, linear: {mse, relmse, rmse, mae},
 //!   srgb8: {...}, quality: {masked: {mse, relmse, rmse, mae}, blurred_mse,
 //!   flip}}], convergence: [{spp, relmse}], convergence_slope }],
-//!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}],
+//!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse,
+//!   ratio_to_sobol (a paired ratio, or null)}],
 //!   kept_fraction, wall_time_s, answer: {claimed_ratio, claimed_spp,
 //!   verdict, paper: {sampler, ratio, ci95 or null} or null, best: {...} or
 //!   null, line} }`; settings also hold preset (name or null),
