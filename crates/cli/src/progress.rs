@@ -227,7 +227,7 @@ impl Reporter {
         let due = (tenth > c.last_tenth && since >= self.interval) || since >= MAX_SILENCE;
         if due && fraction < 1.0 {
             note!(
-                "  {:>3.0}%, {}, {}",
+                "  {:>3.0}%, {} elapsed, {}",
                 100.0 * fraction,
                 duration(elapsed),
                 figures(stage, run, rate, c.unit)
