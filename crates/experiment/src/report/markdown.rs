@@ -31,7 +31,7 @@ fn ms(m: MeanSd) -> String {
 /// single run, or `sobol` itself) the ratio of the means alone.
 fn ratio_cell(s: &SamplerResult) -> String {
     match (relmse_ratio(s), s.relmse_ratio_to_sobol) {
-        (Some(p), _) => paired_cell(&p),
+        (Some(p), _) => paired_cell(p),
         (None, Some(r)) => format!("{r:.3}"),
         (None, None) => "-".into(),
     }
