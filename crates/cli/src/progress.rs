@@ -3,8 +3,12 @@
 //! line when a stage starts, a line at each 10 % (or after 10 s without
 //! one, never more often than every [`DEFAULT_INTERVAL`], or
 //! `LOWDISC_PROGRESS_INTERVAL` seconds) with the same figures, and one
-//! when it ends; `--quiet` silences everything. [`Reporter::summary`]
-//! prints where the time went and where every file is.
+//! when it ends; `--quiet` silences everything. Once a run has reported its
+//! estimate (the experiment), every line and the bar also show the whole
+//! run's progress and time left; the percentages and times come from
+//! [`lowdisc_experiment::eta`], which counts the work in rays.
+//! [`Reporter::summary`] prints where the time went, the estimate beside
+//! the time taken, and where every file is.
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -12,7 +16,8 @@ use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use lowdisc_experiment::{Estimate, Progress};
+use lowdisc_experiment::eta::{Eta, Left};
+use lowdisc_experiment::{Done, Estimate, Progress};
 
 /// Writes one line to stderr, ignoring failure: a full or closed stderr must
 /// not stop (or panic) a job whose progress nobody can read.
@@ -27,6 +32,8 @@ macro_rules! note {
 pub const DEFAULT_INTERVAL: Duration = Duration::from_secs(3);
 /// A line at least this often off a terminal, whatever the percentage.
 const MAX_SILENCE: Duration = Duration::from_secs(10);
+/// Positions of the bar: it shows the stage's fraction of work.
+const BAR_STEPS: u64 = 1000;
 
 /// How progress is shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -48,11 +55,19 @@ struct Current {
     bar: Option<ProgressBar>,
 }
 
+/// The stage in progress, the time left, and the run's first estimate.
+#[derive(Default)]
+struct State {
+    current: Option<Current>,
+    eta: Eta,
+    estimated_seconds: Option<f64>,
+}
+
 /// Prints the progress of one command; shared by its worker threads.
 pub struct Reporter {
     mode: Mode,
     interval: Duration,
-    current: Mutex<Option<Current>>,
+    state: Mutex<State>,
     finished: Mutex<Vec<(String, Duration)>>,
     start: Instant,
 }
@@ -85,6 +100,20 @@ pub fn duration(seconds: f64) -> String {
     }
 }
 
+/// The figures after a stage's percentage: its ETA, then the whole run's
+/// progress and time left when known, else the stage's throughput.
+fn figures(stage: Left, run: Option<Left>, rate: f64, unit: &str) -> String {
+    let eta = format!("ETA {}", duration(stage.seconds));
+    match run {
+        Some(r) => format!(
+            "{eta}; run {:.0}%, {} left",
+            100.0 * r.fraction.min(1.0),
+            duration(r.seconds)
+        ),
+        None => format!("{eta}, {}{unit}/s", si(rate)),
+    }
+}
+
 impl Reporter {
     /// A reporter for stderr: silent with `quiet`, a bar on a terminal,
     /// lines otherwise.
@@ -104,19 +133,28 @@ impl Reporter {
         Reporter {
             mode,
             interval,
-            current: Mutex::new(None),
+            state: Mutex::new(State::default()),
             finished: Mutex::new(Vec::new()),
             start: Instant::now(),
         }
     }
 
-    fn lock(&self) -> MutexGuard<'_, Option<Current>> {
-        self.current.lock().unwrap_or_else(|e| e.into_inner())
+    fn lock(&self) -> MutexGuard<'_, State> {
+        self.state.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// Seconds since the reporter was made (the run's clock).
+    fn now(&self) -> f64 {
+        self.start.elapsed().as_secs_f64()
     }
 
     /// Prints one line (above the bar on a terminal) unless quiet.
     pub fn line(&self, message: &str) {
-        match (self.mode, self.lock().as_ref().and_then(|c| c.bar.as_ref())) {
+        let state = self.lock();
+        match (
+            self.mode,
+            state.current.as_ref().and_then(|c| c.bar.as_ref()),
+        ) {
             (Mode::Quiet, _) => {}
             (_, Some(bar)) => bar.println(message),
             (_, None) => note!("{message}"),
@@ -126,12 +164,14 @@ impl Reporter {
     /// Starts a stage of `total` units named `unit` (ends the previous one).
     pub fn begin_stage(&self, name: &str, total: u64, unit: &'static str) {
         self.end_stage();
+        let now = self.now();
+        self.lock().eta.begin(total, now);
         if self.mode == Mode::Quiet {
             return;
         }
         let bar = (self.mode == Mode::Bar).then(|| {
-            let bar = ProgressBar::new(total.max(1));
-            let template = "{prefix} {bar:20} {percent:>3}% {elapsed} ETA {eta} {msg}";
+            let bar = ProgressBar::new(BAR_STEPS);
+            let template = "{prefix} {bar:12} {percent:>3}% {elapsed} {msg}";
             let style = ProgressStyle::with_template(template)
                 .unwrap_or_else(|_| ProgressStyle::default_bar());
             bar.set_style(style);
@@ -142,7 +182,7 @@ impl Reporter {
             note!("{name}");
         }
         let now = Instant::now();
-        *self.lock() = Some(Current {
+        self.lock().current = Some(Current {
             name: name.to_string(),
             unit,
             total,
@@ -156,28 +196,41 @@ impl Reporter {
 
     /// `done` units of the current stage are finished.
     pub fn advance_stage(&self, done: u64) {
-        let mut guard = self.lock();
-        let Some(c) = guard.as_mut() else { return };
-        c.done = c.done.max(done).min(c.total);
+        self.advance_work(Done {
+            samples: done,
+            rays: 0,
+        });
+    }
+
+    /// `done` of the current stage's work is finished: the stage's units
+    /// (`done.samples`) and, once the run is estimated, its rays.
+    fn advance_work(&self, done: Done) {
+        let now = self.now();
+        let mut state = self.lock();
+        state.eta.advance(done);
+        let (stage, run) = (state.eta.stage(now), state.eta.run(now));
+        let Some(c) = state.current.as_mut() else {
+            return;
+        };
+        let Some(stage) = stage else { return };
+        c.done = c.done.max(done.samples).min(c.total);
         let elapsed = c.start.elapsed().as_secs_f64();
         let rate = c.done as f64 / elapsed.max(1e-9);
+        let fraction = stage.fraction.clamp(0.0, 1.0);
         if let Some(bar) = &c.bar {
-            bar.set_position(c.done);
-            bar.set_message(format!("{}{}/s", si(rate), c.unit));
+            bar.set_position((fraction * BAR_STEPS as f64) as u64);
+            bar.set_message(figures(stage, run, rate, c.unit));
             return;
         }
-        let tenth = c.done * 10 / c.total.max(1);
+        let tenth = (fraction * 10.0) as u64;
         let since = c.last_line.elapsed();
         let due = (tenth > c.last_tenth && since >= self.interval) || since >= MAX_SILENCE;
-        if due && c.done < c.total {
-            let eta = (c.total - c.done) as f64 / rate.max(1e-9);
+        if due && fraction < 1.0 {
             note!(
-                "  {:>3}%, {} elapsed, ETA {}, {}{}/s",
-                c.done * 100 / c.total.max(1),
+                "  {:>3.0}%, {} elapsed, {}",
+                100.0 * fraction,
                 duration(elapsed),
-                duration(eta),
-                si(rate),
-                c.unit
+                figures(stage, run, rate, c.unit)
             );
             c.last_line = Instant::now();
             c.last_tenth = tenth;
@@ -186,7 +239,7 @@ impl Reporter {
 
     /// `units` more units of the current stage are finished.
     pub fn add(&self, units: u64) {
-        let done = self.lock().as_ref().map(|c| c.done + units);
+        let done = self.lock().current.as_ref().map(|c| c.done + units);
         if let Some(done) = done {
             self.advance_stage(done);
         }
@@ -194,7 +247,13 @@ impl Reporter {
 
     /// Ends the current stage, if any, and prints its time.
     pub fn end_stage(&self) {
-        let Some(c) = self.lock().take() else { return };
+        let now = self.now();
+        let (current, run) = {
+            let mut state = self.lock();
+            state.eta.end(now);
+            (state.current.take(), state.eta.run(now))
+        };
+        let Some(c) = current else { return };
         let elapsed = c.start.elapsed();
         if let Some(bar) = &c.bar {
             bar.finish_and_clear();
@@ -206,12 +265,15 @@ impl Reporter {
             } else {
                 " "
             };
-            note!(
-                "{head} done in {} ({}{}/s)",
-                duration(elapsed.as_secs_f64()),
-                si(rate),
-                c.unit
-            );
+            let after = match run {
+                Some(r) => format!(
+                    "; run {:.0}%, {} left",
+                    100.0 * r.fraction,
+                    duration(r.seconds)
+                ),
+                None => format!(" ({}{}/s)", si(rate), c.unit),
+            };
+            note!("{head} done in {}{after}", duration(elapsed.as_secs_f64()));
         }
         let mut finished = self.finished.lock().unwrap_or_else(|e| e.into_inner());
         finished.push((c.name, elapsed));
@@ -226,7 +288,15 @@ impl Reporter {
         }
         let total = self.start.elapsed().as_secs_f64().max(1e-9);
         let finished = self.finished.lock().unwrap_or_else(|e| e.into_inner());
-        note!("time: {} in all", duration(total));
+        match self.lock().estimated_seconds {
+            Some(e) => note!(
+                "time: {} in all (estimated {} at the start, {:+.0} %)",
+                duration(total),
+                duration(e),
+                100.0 * (e / total - 1.0)
+            ),
+            None => note!("time: {} in all", duration(total)),
+        }
         let mut staged = 0.0;
         for (name, t) in finished.iter() {
             let t = t.as_secs_f64();
@@ -273,19 +343,23 @@ impl Progress for Reporter {
         self.line(message);
     }
     fn estimate(&self, e: &Estimate) {
+        {
+            let mut state = self.lock();
+            state.eta.estimate(e);
+            state.estimated_seconds = Some(e.seconds);
+        }
         self.line(&format!(
-            "estimated time: {} for {}samples at {}samples/s (from a {}-spp calibration render)",
+            "estimated run time: {} ({}samples at {}samples/s)",
             duration(e.seconds),
             si(e.samples as f64),
             si(e.samples_per_second),
-            lowdisc_experiment::estimate::CALIBRATION_SPP
         ));
     }
     fn begin(&self, name: &str, total: u64) {
         self.begin_stage(name, total, "samples");
     }
-    fn advance(&self, done: u64) {
-        self.advance_stage(done);
+    fn advance(&self, done: Done) {
+        self.advance_work(done);
     }
     fn end(&self) {
         self.end_stage();

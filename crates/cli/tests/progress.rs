@@ -47,14 +47,15 @@ fn off_a_terminal_progress_is_lines_with_eta_and_a_summary() {
     let log = String::from_utf8_lossy(&o.stderr);
     let lines: Vec<&str> = log.lines().collect();
     assert!(
-        lines[0].starts_with("estimated time: ") && lines[0].contains("samples/s"),
+        lines[0].starts_with("estimated run time: ") && lines[0].contains("samples/s"),
         "{log}"
     );
     let reference = lines
         .iter()
         .position(|l| l.starts_with("rendering reference: 32x32, 256 spp"))
         .unwrap_or_else(|| panic!("{log}"));
-    // Lines at the tenths of the reference render: percentage, elapsed, ETA, throughput.
+    // Lines at the tenths of the reference render: percentage, elapsed, ETA,
+    // and the whole run's percentage and time left.
     let figures: Vec<&&str> = lines[reference + 1..]
         .iter()
         .take_while(|l| l.contains("ETA"))
@@ -62,7 +63,10 @@ fn off_a_terminal_progress_is_lines_with_eta_and_a_summary() {
     assert!(!figures.is_empty(), "{log}");
     for l in &figures {
         assert!(
-            l.contains("%, ") && l.contains(" elapsed, ETA ") && l.ends_with("samples/s"),
+            l.contains("%, ")
+                && l.contains(" elapsed, ETA ")
+                && l.contains("; run ")
+                && l.ends_with(" left"),
             "{l}"
         );
     }
@@ -84,6 +88,10 @@ fn off_a_terminal_progress_is_lines_with_eta_and_a_summary() {
         .iter()
         .position(|l| l.starts_with("time: "))
         .unwrap_or_else(|| panic!("{log}"));
+    assert!(
+        lines[summary].contains(" in all (estimated ") && lines[summary].ends_with(" %)"),
+        "{log}"
+    );
     assert!(
         lines[summary..]
             .iter()
@@ -162,7 +170,7 @@ fn on_a_terminal_progress_is_a_bar() {
     let screen = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{screen}");
     // The bar: redrawn in place (carriage returns or cursor escapes), with
-    // the percentage, ETA and throughput.
+    // the percentage, ETA and the whole run's progress and time left.
     assert!(
         screen.contains('\r') || screen.contains("\x1b["),
         "{screen:?}"
@@ -172,14 +180,17 @@ fn on_a_terminal_progress_is_a_bar() {
         "{screen}"
     );
     assert!(screen.contains("% ") && screen.contains("ETA"), "{screen}");
-    assert!(screen.contains("samples/s"), "{screen}");
+    assert!(
+        screen.contains("; run ") && screen.contains(" left"),
+        "{screen}"
+    );
     assert!(
         screen.contains("rendering reference: 32x32, 256 spp with sobol-owen done in "),
         "{screen}"
     );
     // No lines of the non-terminal form.
     assert!(!screen.contains(" elapsed, ETA "), "{screen}");
-    assert!(screen.contains("estimated time: "), "{screen}");
+    assert!(screen.contains("estimated run time: "), "{screen}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

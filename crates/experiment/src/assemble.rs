@@ -24,6 +24,7 @@ use crate::results::{
     ConvPoint, Images, Results, RunResult, SamplerResult, SweepPoint, fill_ratios,
 };
 use crate::source::{Cursor, Measures, UnitSource, join_cut};
+use crate::stats::paired::paired_ratio;
 use crate::stats::{MeanSd, log_log_slope};
 use crate::sweep::{THRESHOLDS, pixel_discrepancy};
 
@@ -138,7 +139,19 @@ pub fn assemble(
     }
     fill_ratios(&mut samplers);
     fill_statistics(&mut samplers);
-    let threshold_sweep = sweep(plan, &mut cursor, source, &main, observer)?;
+    let sobol = samplers
+        .iter()
+        .find(|s| s.name == SamplerName::Sobol.as_str());
+    let baseline: Option<Vec<f64>> =
+        sobol.map(|s| s.runs.iter().map(|r| r.linear.relmse).collect());
+    let threshold_sweep = sweep(
+        plan,
+        &mut cursor,
+        source,
+        &main,
+        baseline.as_deref(),
+        observer,
+    )?;
     let conv_own;
     let (conv_reference, conv_ref_info) = if shares_reference(config) {
         (&main, ref_info.clone())
@@ -238,12 +251,14 @@ fn sampler_result(name: SamplerName, runs: Vec<RunResult>, deterministic: bool) 
 
 /// The threshold sweep: for each of [`THRESHOLDS`], the star discrepancy
 /// of one pixel's film positions and the errors of the `paper-repro`
-/// renders at that threshold (mean and sd over the seeds).
+/// renders at that threshold (mean and sd over the seeds, and the paired
+/// ratio to `baseline`, `sobol`'s linear relMSE per seed, if given).
 fn sweep(
     plan: &Plan,
     cursor: &mut Cursor,
     source: &mut dyn UnitSource,
     reference: &RgbImage,
+    baseline: Option<&[f64]>,
     observer: &dyn Progress,
 ) -> Result<Vec<SweepPoint>> {
     let config = &plan.config;
@@ -274,6 +289,7 @@ fn sweep(
             star_discrepancy: pixel_discrepancy(config.spp, threshold)?,
             relmse: MeanSd::of(&linear),
             srgb8_relmse: MeanSd::of(&srgb8),
+            ratio_to_sobol: baseline.and_then(|b| paired_ratio(&linear, b)),
         });
     }
     stage.end();

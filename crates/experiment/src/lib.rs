@@ -17,6 +17,7 @@
 //! - [`cut`]: a large render cut into pieces (bands x sample ranges) and
 //!   joined again, exactly;
 //! - [`estimate`]: the estimate of a one-machine run's time;
+//! - [`eta`]: the time left of a stage and of the whole run;
 //! - [`reference`](mod@reference): the converged reference renders, cached on disk;
 //! - [`run`](mod@run): the one-machine run: every unit rendered in-process;
 //! - [`source`]: the units' renders as the assembly reads them, and the
@@ -67,7 +68,8 @@
 //!   [`comparison`]), runs: [{seed, time_s, linear: {mse, relmse, rmse, mae},
 //!   srgb8: {...}, quality: {masked: {mse, relmse, rmse, mae}, blurred_mse,
 //!   flip}}], convergence: [{spp, relmse}], convergence_slope }],
-//!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}],
+//!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse,
+//!   ratio_to_sobol (a paired ratio, or null)}],
 //!   kept_fraction, wall_time_s, answer: {claimed_ratio, claimed_spp,
 //!   verdict, paper: {sampler, ratio, ci95 or null} or null, best: {...} or
 //!   null, line} }`; settings also hold preset (name or null),
@@ -100,6 +102,7 @@ pub mod comparison;
 pub mod config;
 pub mod cut;
 pub mod estimate;
+pub mod eta;
 pub mod figure;
 pub mod metrics;
 pub mod plan;
@@ -122,5 +125,5 @@ pub mod units;
 pub use assemble::Outcome;
 pub use assemble::assemble;
 pub use config::{DEFAULT_SAMPLERS, ExperimentConfig, REF_SAMPLER, REF_SEED};
-pub use progress::{Estimate, Progress, Silent};
+pub use progress::{Done, Estimate, Progress, Silent};
 pub use run::run;

@@ -96,6 +96,10 @@ pub struct SweepPoint {
     pub relmse: MeanSd,
     /// 8-bit sRGB relMSE of the same renders.
     pub srgb8_relmse: MeanSd,
+    /// The linear relMSE relative to `sobol`'s from paired seeds (run `i`
+    /// at this threshold against `sobol`'s run `i`), when `sobol` is among
+    /// the samplers and there are at least two runs.
+    pub ratio_to_sobol: Option<PairedRatio>,
 }
 
 /// The reference render.

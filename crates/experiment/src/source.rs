@@ -53,7 +53,8 @@ impl UnitOutput {
 }
 
 /// Where the assembly gets each unit's render from. `output` reports the
-/// render's samples to `stage` (by [`Stage::finished_render`]).
+/// render's samples (and rays, when it traced them) to `stage` (by
+/// [`Stage::finished_render`]).
 pub trait UnitSource {
     /// The render of `unit`.
     fn output(&mut self, unit: &Unit, stage: &Stage) -> Result<UnitOutput>;

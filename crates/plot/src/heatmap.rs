@@ -1,5 +1,6 @@
 //! Heatmaps: a grid of values (row 0 at the top) shown through a colour map,
-//! with a title and a colour bar labelled with the value range, and the
+//! with a title and a colour bar labelled with the value range (its ends
+//! and middle, in a font that scales with the picture), and the
 //! [`quantile`] that scales an error map so that a few outliers do not wash
 //! it out. Values outside the range are clamped to the colour map's ends;
 //! NaN is drawn magenta, a colour the maps never produce.
@@ -86,10 +87,12 @@ impl Heatmap {
     pub fn to_canvas(&self) -> Canvas {
         let img_w = self.width as f32 * self.scale;
         let img_h = self.height as f32 * self.scale;
-        let font = (img_h / 20.0).clamp(10.0, 16.0);
+        // Reports show a heatmap at about half its size beside two other
+        // images: the labels scale with the picture's longer side.
+        let font = (img_w.max(img_h) / 22.0).clamp(12.0, 28.0);
         let pad = font;
         let top = 2.4 * font;
-        let bar_w = 1.2 * font;
+        let bar_w = 1.5 * font;
         let label_w = 6.0 * font;
         let width = (pad + img_w + pad + bar_w + 0.5 * font + label_w).ceil() as u32;
         let height = (top + img_h + pad).ceil() as u32;
@@ -97,7 +100,7 @@ impl Heatmap {
         canvas.text(
             [pad + img_w / 2.0, 1.6 * font],
             &self.title,
-            TextStyle::new(1.15 * font, Anchor::Middle),
+            TextStyle::new(font, Anchor::Middle),
         );
         canvas.push(Shape::Image {
             origin: [pad, top],
@@ -126,12 +129,14 @@ impl Heatmap {
         });
         canvas.rect([bar_x, top], [bar_w, img_h], None, border);
         let [lo, hi] = self.value_range();
-        let label = TextStyle {
-            color: Color::GREY,
-            ..TextStyle::new(0.8 * font, Anchor::Start).mono()
-        };
+        let label = TextStyle::new(0.9 * font, Anchor::Start).mono();
         let lx = bar_x + bar_w + 0.4 * font;
         canvas.text([lx, top + 0.8 * font], short(hi), label);
+        canvas.text(
+            [lx, top + 0.5 * img_h + 0.3 * font],
+            short(0.5 * (lo + hi)),
+            label,
+        );
         canvas.text([lx, top + img_h], short(lo), label);
         canvas
     }

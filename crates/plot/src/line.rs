@@ -1,6 +1,9 @@
 //! Line charts: several named series on linear or log-log axes, with a
-//! legend, axis labels, optional markers and dashed reference lines (for
-//! example an `N^-1` slope in a convergence plot).
+//! legend, axis labels, optional markers, error bars and dashed reference
+//! lines (for example an `N^-1` slope in a convergence plot, or a ratio of
+//! 1). Tick labels are 0.95 times the label font, which is at least
+//! [`MIN_FONT`] pixels, so that they stay readable when a chart is shown
+//! at half its size.
 
 use crate::axis::{Axis, Frame};
 use crate::canvas::{Anchor, Canvas, Shape, Stroke, TextStyle};
@@ -20,6 +23,8 @@ pub struct Series {
     pub dashed: bool,
     /// Draw a marker at each point.
     pub markers: bool,
+    /// Error bars: `[low, high]` for each point, or empty for none.
+    pub bars: Vec<[f64; 2]>,
 }
 
 impl Series {
@@ -31,7 +36,23 @@ impl Series {
             color: None,
             dashed: false,
             markers: true,
+            bars: Vec::new(),
         }
+    }
+
+    /// The same series with an error bar from `low` to `high` at each
+    /// point (one `[low, high]` per point).
+    ///
+    /// ```
+    /// use lowdisc_plot::{LineChart, Series};
+    /// let s = Series::new("ratio", vec![[0.0, 2.0], [1.0, 1.0]])
+    ///     .with_bars(vec![[1.9, 2.1], [0.95, 1.05]]);
+    /// let canvas = LineChart::log_log("t", "x", "y").with(s).to_canvas();
+    /// assert!(canvas.width > 0);
+    /// ```
+    pub fn with_bars(mut self, bars: Vec<[f64; 2]>) -> Self {
+        self.bars = bars;
+        self
     }
 
     /// A dashed series without markers, e.g. a reference slope.
@@ -42,9 +63,22 @@ impl Series {
             color: Some(Color::GREY),
             dashed: true,
             markers: false,
+            bars: Vec::new(),
+        }
+    }
+
+    /// A dashed horizontal line at `y` from `x0` to `x1` in `color`
+    /// (a reference value, such as a ratio of 1).
+    pub fn level(name: impl Into<String>, y: f64, [x0, x1]: [f64; 2], color: Color) -> Self {
+        Series {
+            color: Some(color),
+            ..Series::reference(name, vec![[x0, y], [x1, y]])
         }
     }
 }
+
+/// The least label font of a chart, in pixels.
+pub const MIN_FONT: f32 = 13.0;
 
 /// A line chart.
 #[derive(Debug, Clone, PartialEq)]
@@ -93,14 +127,15 @@ impl LineChart {
     /// positive on a log axis) are skipped and break the line.
     pub fn to_canvas(&self) -> Canvas {
         let [plot_w, h] = self.size;
-        let font = (h as f32 / 34.0).clamp(10.0, 16.0);
+        let font = (h as f32 / 34.0).clamp(MIN_FONT, 18.0);
         // The legend sits right of the plot area, so it never hides data.
         let legend_w = self.legend_width(font);
         let w = plot_w + legend_w.ceil() as u32;
         let mut canvas = Canvas::new(w, h);
         let all = self.series.iter().flat_map(|s| s.points.iter());
         let x_axis = Axis::fit(all.clone().map(|p| p[0]), self.x_log);
-        let y_axis = Axis::fit(all.map(|p| p[1]), self.y_log);
+        let bars = self.series.iter().flat_map(|s| s.bars.iter().flatten());
+        let y_axis = Axis::fit(all.map(|p| p[1]).chain(bars.copied()), self.y_log);
         let frame = Frame {
             x: 5.5 * font,
             y: 2.6 * font,
@@ -115,7 +150,7 @@ impl LineChart {
             &self.title,
             TextStyle::new(1.2 * font, Anchor::Middle),
         );
-        frame.draw_axes(&mut canvas, 0.8 * font, true);
+        frame.draw_axes(&mut canvas, 0.95 * font, true);
         canvas.text(
             [frame.x + frame.width / 2.0, h as f32 - 0.8 * font],
             &self.x_label,
@@ -214,11 +249,29 @@ fn draw_series(canvas: &mut Canvas, frame: &Frame, s: &Series, index: usize) {
         }
     }
     flush(canvas, &mut run);
+    draw_bars(canvas, frame, s, stroke);
     if s.markers {
         for p in &s.points {
             if drawable(&frame.x_axis, p[0]) && drawable(&frame.y_axis, p[1]) {
                 canvas.circle(frame.to_canvas(p[0], p[1]), 3.0, stroke.color);
             }
+        }
+    }
+}
+
+/// The series' error bars: a vertical line with short caps at each point
+/// whose bar can be drawn.
+fn draw_bars(canvas: &mut Canvas, frame: &Frame, s: &Series, stroke: Stroke) {
+    let stroke = Stroke::solid(stroke.color, 1.5);
+    for (p, [lo, hi]) in s.points.iter().zip(&s.bars) {
+        let ok = |y: f64| drawable(&frame.x_axis, p[0]) && drawable(&frame.y_axis, y);
+        if !(ok(*lo) && ok(*hi)) {
+            continue;
+        }
+        let (a, b) = (frame.to_canvas(p[0], *lo), frame.to_canvas(p[0], *hi));
+        canvas.line(a, b, stroke);
+        for end in [a, b] {
+            canvas.line([end[0] - 4.0, end[1]], [end[0] + 4.0, end[1]], stroke);
         }
     }
 }
@@ -252,6 +305,31 @@ mod tests {
             .filter(|s| matches!(s, Shape::Circle { .. }))
             .count();
         assert_eq!(markers, 4 + 1, "four data markers and one legend marker");
+    }
+
+    #[test]
+    fn error_bars_span_their_interval_and_widen_the_axis() {
+        let s =
+            Series::new("r", vec![[0.0, 1.0], [1.0, 2.0]]).with_bars(vec![[0.5, 1.5], [1.0, 4.0]]);
+        let mut chart = LineChart::log_log("t", "x", "y").with(s);
+        chart.x_log = false;
+        chart.y_log = false;
+        let canvas = chart.to_canvas();
+        let lines: Vec<[[f32; 2]; 2]> = canvas
+            .shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Line { from, to, .. } if from[0] == to[0] && from[1] != to[1] => {
+                    Some([*from, *to])
+                }
+                _ => None,
+            })
+            .collect();
+        // Grid lines are vertical too; the bars are the two shortest whose
+        // lengths are in the ratio of the intervals, 1 : 3.
+        let mut lengths: Vec<f32> = lines.iter().map(|l| (l[1][1] - l[0][1]).abs()).collect();
+        lengths.sort_by(f32::total_cmp);
+        assert!((lengths[1] / lengths[0] - 3.0).abs() < 1e-3, "{lengths:?}");
     }
 
     #[test]

@@ -93,7 +93,8 @@ pub struct ExperimentArgs {
     /// Samples per pixel of every compared render [default: 16; --quick: 4].
     #[arg(long, value_name = "N")]
     spp: Option<u32>,
-    /// Renders per sampler, seeds 0..runs [default: 3; --quick: 2; --paper: 10].
+    /// Renders per sampler, seeds 0..runs [default: 8; --quick: 2; --paper: 10;
+    /// --preset: 16].
     #[arg(long, value_name = "N")]
     runs: Option<u32>,
     /// Image resolution [default: 256x144; --quick: 32x32; --paper: 1280x720].

@@ -11,7 +11,7 @@ use super::answer::Answer;
 use crate::comparison::relmse_ratio;
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::results::{Results, SamplerResult};
-use crate::stats::{MeanSd, Verdict};
+use crate::stats::{MeanSd, PairedRatio, Verdict};
 
 /// Render times whose sd over a sampler's runs exceeds this fraction of
 /// their mean get a note.
@@ -31,17 +31,21 @@ fn ms(m: MeanSd) -> String {
 /// single run, or `sobol` itself) the ratio of the means alone.
 fn ratio_cell(s: &SamplerResult) -> String {
     match (relmse_ratio(s), s.relmse_ratio_to_sobol) {
-        (Some(p), _) => {
-            let ratio = format!("{:.3}", p.ratio);
-            let ratio = match p.verdict {
-                Verdict::NotDistinguishable => ratio,
-                _ => format!("**{ratio}**"),
-            };
-            format!("{ratio} ({:.3} to {:.3})", p.ci95[0], p.ci95[1])
-        }
+        (Some(p), _) => paired_cell(p),
         (None, Some(r)) => format!("{r:.3}"),
         (None, None) => "-".into(),
     }
+}
+
+/// A paired ratio with its interval, the ratio bold when the interval
+/// excludes 1.
+fn paired_cell(p: &PairedRatio) -> String {
+    let ratio = format!("{:.3}", p.ratio);
+    let ratio = match p.verdict {
+        Verdict::NotDistinguishable => ratio,
+        _ => format!("**{ratio}**"),
+    };
+    format!("{ratio} ({:.3} to {:.3})", p.ci95[0], p.ci95[1])
 }
 
 fn summary_table(results: &Results) -> String {
@@ -208,14 +212,16 @@ brighter is worse, larger errors show as the top colour). Click an image for its
     );
     md.push_str("\n## Threshold sweep (paper's method)\n\n\
 `paper-repro` rendered at each threshold (the probability that a generator-matrix column is left unflipped; \
-1 is plain Sobol), mean ± sd over the runs' seeds, and the star discrepancy of one pixel's film positions \
-(dimensions 0-1, permuted too).\n\n");
+1 is plain Sobol), mean ± sd over the runs' seeds, its ratio to `sobol`'s from paired seeds with the 95 % \
+interval (plotted as error bars, beside the paper's claimed ratio), and the star discrepancy of one pixel's \
+film positions (dimensions 0-1, permuted too).\n\n");
     md.push_str(&image("threshold sweep", "threshold_sweep.png"));
-    md.push_str("\n\n| threshold | relMSE (linear) | relMSE (sRGB8) | star discrepancy |\n|---|---|---|---|\n");
+    md.push_str("\n\n| threshold | relMSE (linear) | relMSE / sobol, paired (95 % interval) | relMSE (sRGB8) | star discrepancy |\n|---|---|---|---|---|\n");
     for p in &results.threshold_sweep {
+        let ratio = p.ratio_to_sobol.as_ref().map_or("-".into(), paired_cell);
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {:.5} |",
+            "| {} | {} | {ratio} | {} | {:.5} |",
             p.threshold,
             ms(p.relmse),
             ms(p.srgb8_relmse),
@@ -234,7 +240,7 @@ samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, sr
 relmse_ratio_to_sobol, relmse_ratio_interval, statistics: [{metric, summary: {n, mean, sd, se, ci95}, ratio_to_baseline: \
 {n, ratio, ci95, log_ratio, ratio_of_means, verdict} or null}], \
 runs: [{seed, time_s, linear, srgb8, quality: {masked, blurred_mse, flip}}], convergence: [{spp, relmse}], convergence_slope}], \
-threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse}], kept_fraction, wall_time_s, \
+threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse, ratio_to_sobol}], kept_fraction, wall_time_s, \
 answer: {claimed_ratio, claimed_spp, verdict, paper: {sampler, ratio, ci95}, best: {sampler, ratio, ci95}, line}}`; \
 the other metric summaries are `{mean, sd}`.\n");
     md

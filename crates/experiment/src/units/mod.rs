@@ -58,7 +58,7 @@ pub fn render_unit(
     }
     let options = config.render_options(&settings)?;
     let out = render(&subject.scene, &view, &options, stage)?;
-    stage.finished_render(out.stats.samples);
+    stage.finished_render(out.stats.samples, out.stats.rays);
     let rendered = if keeps_sums {
         let name = format!("{scene_hash:016x}");
         Rendered::Sums(RenderPart::of_render(name, &view, &options, &out))
@@ -102,7 +102,7 @@ impl UnitSource for FromFiles<'_> {
             .record(unit.index, &self.plan.id)?
             .with_context(|| format!("unit {} is not done", unit.index))?;
         let rendered = self.store.read(&record)?;
-        stage.finished_render(record.samples);
+        stage.finished_render(record.samples, 0);
         Ok(UnitOutput {
             rendered,
             render_time_s: record.render_time_s,
