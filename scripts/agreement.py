@@ -22,7 +22,8 @@ the layout of Bitterli's scenes as converted to pbrt-v4), the harness:
    *agrees* (every channel mean within 1.5 % or 2 standard errors, and the
    block ratio's p5 and p95 inside pbrt-v4's seed-to-seed band), *differs*,
    *refused* (lowdisc's error message), *incomplete* or *pbrt-v4 failed*;
-5. writes `table.md` (one row per scene, then the median speed ratio) and
+5. with --rgb-timing, times one lowdisc RGB render (seed 1) as well;
+6. writes `table.md` (one row per scene, then the median speed-ups) and
    per scene `side-by-side.png` (lowdisc, pbrt-v4, block ratio map: red
    where lowdisc is brighter, blue where darker, full colour at 25 %).
 
@@ -138,6 +139,22 @@ def missing_files(scene, scan_limit=64 << 20):
             elif name.endswith(".pbrt") and os.path.getsize(path) <= scan_limit:
                 todo.append(path)
     return missing
+
+
+def scene_names(collection, pattern):
+    """(name, path) of the scene files (those with a WorldBegin) matching
+    `pattern` under `collection`, sorted: a name is the file's first folder,
+    or folder/file (without .pbrt) where a folder holds several scenes."""
+    paths = []
+    for path in sorted(glob.glob(os.path.join(collection, pattern))):
+        with open(path, errors="replace") as f:
+            if re.search(r"^\s*WorldBegin", f.read(), re.M):
+                paths.append(path)
+    firsts = [os.path.relpath(p, collection).split(os.sep)[0] for p in paths]
+    names = [first if firsts.count(first) == 1 else
+             first + "/" + os.path.splitext(os.path.basename(p))[0]
+             for first, p in zip(firsts, paths)]
+    return list(zip(names, paths))
 
 
 def film_resolution(text):
@@ -351,6 +368,14 @@ def renderer_commands(args, scene, seed, image):
     return {"lowdisc": lowdisc + args.lowdisc_arg, "pbrt": pbrt}
 
 
+def rgb_time(args, scene, folder):
+    """Seconds of one lowdisc RGB render (seed 1) of `scene`, or None if it failed."""
+    image = os.path.join(folder, "lowdisc-rgb-1.pfm")
+    cmd = [a for a in renderer_commands(args, scene, 1, image)["lowdisc"] if a != "--spectral"]
+    record = run_once(cmd, image, image + ".json", args.timeout)
+    return record["seconds"] if record["ok"] else None
+
+
 def first_error(stderr):
     """The line of `stderr` that states the error (else its first line)."""
     lines = [line.strip() for line in stderr.splitlines() if line.strip()]
@@ -365,7 +390,8 @@ def render_scene(args, name, src, folder):
     row = {"scene": name}
     missing = missing_files(src)
     if missing:
-        row.update(verdict="incomplete", note="absent: " + ", ".join(sorted(missing)))
+        shown = ", ".join(sorted(missing)[:4]) + (", ..." if len(missing) > 4 else "")
+        row.update(verdict="incomplete", note="%d absent: %s" % (len(missing), shown))
         return row
     with open(src, errors="replace") as f:
         width, height = film_resolution(f.read())
@@ -399,6 +425,8 @@ def render_scene(args, name, src, folder):
         return row
     lowdisc = [read_pfm(image) for _, image in runs["lowdisc"]]
     pbrt = [read_pfm(image) for _, image in runs["pbrt"]]
+    if args.rgb_timing and not args.rgb:
+        row["time_rgb"] = rgb_time(args, scene, folder)
     row["stats"] = compare(lowdisc, pbrt)
     row["verdict"], reasons = verdict(row["stats"])
     row["note"] = "; ".join(reasons)
@@ -417,35 +445,40 @@ def row_markdown(row):
     sig = "%.1f" % max(s["sigmas"]) if s else ""
     cross = "%.3f / %.3f / %.3f" % tuple(s["cross"]) if s and "cross" in s else ""
     band = "%.3f-%.3f" % tuple(s["band"]) if s and "band" in s else ""
-    t_l, t_p = row.get("time_lowdisc"), row.get("time_pbrt")
+    t_l, t_p, t_rgb = row.get("time_lowdisc"), row.get("time_pbrt"), row.get("time_rgb")
     speed = "%.2f" % (t_p / t_l) if t_l and t_p and "stats" in row else ""
 
     def secs(t):
         return "%.1f" % t if t else ""
     cells = [row["scene"], row.get("res", ""), "**%s**" % row["verdict"], means, sig, cross,
-             band, secs(t_l), secs(t_p), speed, row.get("note", "").replace("|", "/")]
+             band, secs(t_l), secs(t_rgb), secs(t_p), speed, row.get("note", "").replace("|", "/")]
     return "| " + " | ".join(cells) + " |"
 
 
 def table_markdown(rows):
     """The Markdown table of all rows, a verdict count and the median speed ratio."""
     head = ("| scene | res | verdict | means lowdisc/pbrt-v4 (R, G, B) | max SE | "
-            "block ratio p5 / median / p95 | pbrt-v4 seed band | lowdisc s | pbrt-v4 s | "
-            "speed-up | note |\n|" + "---|" * 11)
+            "block ratio p5 / median / p95 | pbrt-v4 seed band | lowdisc s | lowdisc RGB s | "
+            "pbrt-v4 s | speed-up | note |\n|" + "---|" * 12)
     lines = [head] + [row_markdown(r) for r in rows]
     counts = {}
     for r in rows:
         counts[r["verdict"]] = counts.get(r["verdict"], 0) + 1
     lines.append("")
     lines.append("Verdicts: " + ", ".join("%s %d" % kv for kv in sorted(counts.items())) + ".")
-    ratios = sorted(r["time_pbrt"] / r["time_lowdisc"] for r in rows
-                    if "stats" in r and r.get("time_lowdisc") and r.get("time_pbrt"))
-    if ratios:
-        mid = len(ratios) // 2
-        median = ratios[mid] if len(ratios) % 2 else (ratios[mid - 1] + ratios[mid]) / 2
-        lines.append("Median whole-process speed-up (pbrt-v4 time / lowdisc time) over %d "
-                     "compared scenes: %.2f." % (len(ratios), median))
+    for key, label in (("time_lowdisc", "lowdisc"), ("time_rgb", "lowdisc RGB")):
+        ratios = [r["time_pbrt"] / r[key] for r in rows
+                  if "stats" in r and r.get(key) and r.get("time_pbrt")]
+        if ratios:
+            lines.append("Median whole-process speed-up of %s (pbrt-v4 time / its time) over "
+                         "%d compared scenes: %.2f." % (label, len(ratios), median(ratios)))
     return "\n".join(lines) + "\n"
+
+
+def median(values):
+    """The median of a non-empty list of numbers."""
+    v, mid = sorted(values), len(values) // 2
+    return v[mid] if len(v) % 2 else (v[mid - 1] + v[mid]) / 2
 
 
 def main(argv=None):
@@ -464,16 +497,18 @@ def main(argv=None):
                    help="smallest long side of the reduced image (pixels)")
     p.add_argument("--threads", type=int, default=0, help="threads of both (0: their default)")
     p.add_argument("--rgb", action="store_true", help="lowdisc in RGB instead of --spectral")
+    p.add_argument("--rgb-timing", action="store_true",
+                   help="also time one lowdisc RGB render of every compared scene")
     p.add_argument("--timeout", type=int, default=1800, help="seconds per render")
     p.add_argument("--out", default=os.path.join(tempfile.gettempdir(), "lowdisc-agreement"),
                    help="output folder (renders, pictures, table.md, rows.json)")
     args = p.parse_args(argv)
     sub = "%s-spp%d-div%d" % ("rgb" if args.rgb else "spectral", args.spp, args.divide)
+    sub += "".join("-" + re.sub(r"[^A-Za-z0-9.=]+", "", a) for a in args.lowdisc_arg)
     out = os.path.join(args.out, sub)
     os.makedirs(out, exist_ok=True)
     rows = []
-    for src in sorted(glob.glob(os.path.join(args.collection, args.pattern))):
-        name = os.path.relpath(src, args.collection).split(os.sep)[0]
+    for name, src in scene_names(args.collection, args.pattern):
         if args.scenes and name not in args.scenes:
             continue
         folder = os.path.join(out, name)

@@ -169,5 +169,5 @@ def test_table_counts_verdicts_and_takes_the_median_speed_up():
             {"scene": "c", "verdict": "refused", "note": "x | y", "time_lowdisc": 0.1}]
     table = agreement.table_markdown(rows)
     assert "Verdicts: agrees 2, refused 1." in table
-    assert "over 2 compared scenes: 2.00." in table
+    assert "lowdisc (pbrt-v4 time / its time) over 2 compared scenes: 2.00." in table
     assert "x / y" in table
