@@ -14,7 +14,10 @@ the layout of Bitterli's scenes as converted to pbrt-v4), the harness:
 3. renders it with lowdisc (`--spectral` unless --rgb) and with pbrt-v4,
    seeds 1 and 2 each, as whole processes (start-up, parsing, building,
    rendering, writing a PFM), recording each one's time; a render already
-   done is not repeated (delete its folder under --out to redo it);
+   done is not repeated (delete its files under --out to redo it), and
+   pbrt-v4's renders (OUT/spp.../SCENE/pbrt-SEED.pfm) are shared by runs
+   that differ only in lowdisc's options (lowdisc's go into a subfolder
+   named by its mode and --lowdisc-arg);
 4. compares them: channel means of the two-seed averages with standard
    errors, the 8x8-block luminance ratio lowdisc/pbrt-v4 (seed 1 against
    seed 2 and seed 2 against seed 1, pooled: p5, median, p95) against
@@ -23,7 +26,7 @@ the layout of Bitterli's scenes as converted to pbrt-v4), the harness:
    block ratio's p5 and p95 inside pbrt-v4's seed-to-seed band), *differs*,
    *refused* (lowdisc's error message), *incomplete* or *pbrt-v4 failed*;
 5. with --rgb-timing, times one lowdisc RGB render (seed 1) as well;
-6. writes `table.md` (one row per scene, then the median speed-ups) and
+6. writes `table-MODE.md` (one row per scene, then the median speed-ups) and
    per scene `side-by-side.png` (lowdisc, pbrt-v4, block ratio map: red
    where lowdisc is brighter, blue where darker, full colour at 25 %).
 
@@ -385,8 +388,10 @@ def first_error(stderr):
     return lines[0] if lines else "(no message)"
 
 
-def render_scene(args, name, src, folder):
-    """Renders one scene (resumably) and returns its row as a dict."""
+def render_scene(args, name, src, folder, mode):
+    """Renders one scene (resumably) and returns its row as a dict: the
+    rewritten scene and pbrt-v4's renders go into `folder`, lowdisc's renders
+    and the picture into its subfolder `mode`."""
     row = {"scene": name}
     missing = missing_files(src)
     if missing:
@@ -402,9 +407,11 @@ def render_scene(args, name, src, folder):
         pbrt_variants.write_variant(src, variant, res=res, sampler="independent", spp=args.spp)
     scene = os.path.join(variant, os.path.basename(src))
     runs = {"lowdisc": [], "pbrt": []}
+    places = {"lowdisc": os.path.join(folder, mode), "pbrt": folder}
+    os.makedirs(places["lowdisc"], exist_ok=True)
     for seed in SEEDS:
         for who in ("lowdisc", "pbrt"):
-            image = os.path.join(folder, "%s-%d.pfm" % (who, seed))
+            image = os.path.join(places[who], "%s-%d.pfm" % (who, seed))
             cmd = renderer_commands(args, scene, seed, image)[who]
             record = run_once(cmd, image, image + ".json", args.timeout)
             runs[who].append((record, image))
@@ -426,11 +433,11 @@ def render_scene(args, name, src, folder):
     lowdisc = [read_pfm(image) for _, image in runs["lowdisc"]]
     pbrt = [read_pfm(image) for _, image in runs["pbrt"]]
     if args.rgb_timing and not args.rgb:
-        row["time_rgb"] = rgb_time(args, scene, folder)
+        row["time_rgb"] = rgb_time(args, scene, places["lowdisc"])
     row["stats"] = compare(lowdisc, pbrt)
     row["verdict"], reasons = verdict(row["stats"])
     row["note"] = "; ".join(reasons)
-    side_by_side(os.path.join(folder, "side-by-side.png"), lowdisc, pbrt)
+    side_by_side(os.path.join(places["lowdisc"], "side-by-side.png"), lowdisc, pbrt)
     return row
 
 
@@ -501,11 +508,11 @@ def main(argv=None):
                    help="also time one lowdisc RGB render of every compared scene")
     p.add_argument("--timeout", type=int, default=1800, help="seconds per render")
     p.add_argument("--out", default=os.path.join(tempfile.gettempdir(), "lowdisc-agreement"),
-                   help="output folder (renders, pictures, table.md, rows.json)")
+                   help="output folder (renders, pictures, table-MODE.md, rows-MODE.json)")
     args = p.parse_args(argv)
-    sub = "%s-spp%d-div%d" % ("rgb" if args.rgb else "spectral", args.spp, args.divide)
-    sub += "".join("-" + re.sub(r"[^A-Za-z0-9.=]+", "", a) for a in args.lowdisc_arg)
-    out = os.path.join(args.out, sub)
+    out = os.path.join(args.out, "spp%d-div%d-min%d" % (args.spp, args.divide, args.min_size))
+    mode = "rgb" if args.rgb else "spectral"
+    mode += "".join("-" + re.sub(r"[^A-Za-z0-9.=]+", "", a) for a in args.lowdisc_arg)
     os.makedirs(out, exist_ok=True)
     rows = []
     for name, src in scene_names(args.collection, args.pattern):
@@ -513,13 +520,13 @@ def main(argv=None):
             continue
         folder = os.path.join(out, name)
         os.makedirs(folder, exist_ok=True)
-        rows.append(render_scene(args, name, src, folder))
+        rows.append(render_scene(args, name, src, folder, mode))
         print("%-20s %s %s" % (name, rows[-1]["verdict"], rows[-1].get("note", "")), flush=True)
-        with open(os.path.join(out, "rows.json"), "w") as f:
+        with open(os.path.join(out, "rows-%s.json" % mode), "w") as f:
             json.dump(rows, f, indent=1)
-    with open(os.path.join(out, "table.md"), "w") as f:
+    with open(os.path.join(out, "table-%s.md" % mode), "w") as f:
         f.write(table_markdown(rows))
-    print(os.path.join(out, "table.md"))
+    print(os.path.join(out, "table-%s.md" % mode))
 
 
 if __name__ == "__main__":
