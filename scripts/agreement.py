@@ -326,7 +326,7 @@ def side_by_side(path, lowdisc, pbrt):
     """lowdisc's and pbrt-v4's two-seed averages (one exposure: pbrt-v4's
     99th luminance percentile maps to 1) and the block ratio map."""
     import numpy as np
-    lo, pb = (a + b) / 2, (pbrt[0] + pbrt[1]) / 2
+    lo, pb = (lowdisc[0] + lowdisc[1]) / 2, (pbrt[0] + pbrt[1]) / 2
     top = np.quantile(luminance(pb), 0.99)
     scale = 1 / top if top > 0 else 1.0
     gap = np.full((lo.shape[0], 4, 3), 255, np.uint8)

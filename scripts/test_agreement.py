@@ -171,3 +171,12 @@ def test_table_counts_verdicts_and_takes_the_median_speed_up():
     assert "Verdicts: agrees 2, refused 1." in table
     assert "lowdisc (pbrt-v4 time / its time) over 2 compared scenes: 2.00." in table
     assert "x / y" in table
+
+
+def test_side_by_side_has_three_panels(tmp_path):
+    rng = np.random.default_rng(5)
+    truth = scene_truth(rng)
+    agreement.side_by_side(str(tmp_path / "s.png"), renders(rng, truth, 0.1),
+                           renders(rng, truth, 0.1))
+    data = (tmp_path / "s.png").read_bytes()
+    assert struct.unpack(">II", data[16:24]) == (3 * SHAPE[1] + 8, SHAPE[0])
