@@ -13,7 +13,8 @@ the layout of Bitterli's scenes as converted to pbrt-v4), the harness:
    `Sampler "independent"` with --spp samples;
 3. renders it with lowdisc (`--spectral` unless --rgb) and with pbrt-v4,
    seeds 1 and 2 each, as whole processes (start-up, parsing, building,
-   rendering, writing a PFM), recording each one's time; a render already
+   rendering, writing a PFM), recording each one's time (a scene's time is
+   the shorter of its two seeds', less exposed to a busy machine); a render already
    done is not repeated (delete its files under --out to redo it), and
    pbrt-v4's renders (OUT/spp.../SCENE/pbrt-SEED.pfm) are shared by runs
    that differ only in lowdisc's options (lowdisc's go into a subfolder
@@ -416,14 +417,15 @@ def render_scene(args, name, src, folder, mode):
             record = run_once(cmd, image, image + ".json", args.timeout)
             runs[who].append((record, image))
             if who == "lowdisc" and not record["ok"]:
-                row.update(verdict="refused", note=first_error(record["stderr"]))
+                message = first_error(record["stderr"]).replace(variant + os.sep, "")
+                row.update(verdict="refused", note=message)
                 break
         if "verdict" in row:
             break
     for who in runs:
         times = [r["seconds"] for r, _ in runs[who] if r["ok"]]
         if times:
-            row["time_" + who] = sum(times) / len(times)
+            row["time_" + who] = min(times)
     if "verdict" in row:
         return row
     if not all(r["ok"] for r, _ in runs["pbrt"]):
