@@ -241,8 +241,8 @@ def block_ratios(lowdisc, pbrt):
     import numpy as np
     (l1, l2), (p1, p2) = ([luminance(block_sums(i)) for i in pair] for pair in (lowdisc, pbrt))
     mask = (l1 > 0) & (l2 > 0) & (p1 > 0) & (p2 > 0)
-    cross = np.concatenate([(l1 / p2)[mask], (l2 / p1)[mask]])
-    return cross, (p1 / p2)[mask], mask
+    l1, l2, p1, p2 = l1[mask], l2[mask], p1[mask], p2[mask]
+    return np.concatenate([l1 / p2, l2 / p1]), p1 / p2, mask
 
 
 def compare(lowdisc, pbrt):
@@ -314,7 +314,8 @@ def ratio_map(lowdisc, pbrt, shape, full=0.25):
     a block is black in pbrt-v4."""
     import numpy as np
     lo, pb = (luminance(block_sums(a + b)) for a, b in (lowdisc, pbrt))
-    t = np.clip(np.log(np.where(pb > 0, lo / np.where(pb > 0, pb, 1), 1)) / np.log1p(full), -1, 1)
+    ratio = np.where(pb > 0, lo / np.where(pb > 0, pb, 1), 1)
+    t = np.clip(np.log(np.maximum(ratio, 1e-9)) / np.log1p(full), -1, 1)
     rgb = np.stack([1 - np.clip(-t, 0, 1), 1 - np.abs(t), 1 - np.clip(t, 0, 1)], axis=-1)
     rgb[pb <= 0] = 0.5
     big = np.kron(rgb, np.ones((BLOCK, BLOCK, 1)))
