@@ -390,48 +390,58 @@ def first_error(stderr):
     return lines[0] if lines else "(no message)"
 
 
-def render_scene(args, name, src, folder, mode):
-    """Renders one scene (resumably) and returns its row as a dict: the
-    rewritten scene and pbrt-v4's renders go into `folder`, lowdisc's renders
-    and the picture into its subfolder `mode`."""
-    row = {"scene": name}
-    missing = missing_files(src)
-    if missing:
-        shown = ", ".join(sorted(missing)[:4]) + (", ..." if len(missing) > 4 else "")
-        row.update(verdict="incomplete", note="%d absent: %s" % (len(missing), shown))
-        return row
+def prepare(args, src, folder):
+    """The rewritten copy of scene `src` in `folder`/scene (written once) and
+    its resolution "WxH"."""
     with open(src, errors="replace") as f:
         width, height = film_resolution(f.read())
     res = reduced_resolution(width, height, args.divide, args.min_size)
-    row["res"] = "%dx%d" % res
     variant = os.path.join(folder, "scene")
     if not os.path.exists(variant):
         pbrt_variants.write_variant(src, variant, res=res, sampler="independent", spp=args.spp)
-    scene = os.path.join(variant, os.path.basename(src))
+    return os.path.join(variant, os.path.basename(src)), "%dx%d" % res
+
+
+def render_seeds(args, scene, places):
+    """Renders `scene` with each seed, lowdisc then pbrt-v4, into `places`
+    (renderer -> folder), stopping at the first failure; returns renderer ->
+    [(record, image)]."""
     runs = {"lowdisc": [], "pbrt": []}
-    places = {"lowdisc": os.path.join(folder, mode), "pbrt": folder}
-    os.makedirs(places["lowdisc"], exist_ok=True)
     for seed in SEEDS:
-        for who in ("lowdisc", "pbrt"):
+        for who in runs:
             image = os.path.join(places[who], "%s-%d.pfm" % (who, seed))
             cmd = renderer_commands(args, scene, seed, image)[who]
             record = run_once(cmd, image, image + ".json", args.timeout)
             runs[who].append((record, image))
-            if who == "lowdisc" and not record["ok"]:
-                message = first_error(record["stderr"]).replace(variant + os.sep, "")
-                row.update(verdict="refused", note=message)
-                break
-        if "verdict" in row:
-            break
+            if not record["ok"]:
+                return runs
+    return runs
+
+
+def render_scene(args, name, src, folder, mode):
+    """Renders one scene (resumably) and returns its row as a dict: the
+    rewritten scene and pbrt-v4's renders go into `folder`, lowdisc's renders
+    and the picture into its subfolder `mode`."""
+    missing = missing_files(src)
+    if missing:
+        shown = ", ".join(sorted(missing)[:4]) + (", ..." if len(missing) > 4 else "")
+        return {"scene": name, "verdict": "incomplete",
+                "note": "%d absent: %s" % (len(missing), shown)}
+    scene, res = prepare(args, src, folder)
+    row = {"scene": name, "res": res}
+    places = {"lowdisc": os.path.join(folder, mode), "pbrt": folder}
+    os.makedirs(places["lowdisc"], exist_ok=True)
+    runs = render_seeds(args, scene, places)
     for who in runs:
         times = [r["seconds"] for r, _ in runs[who] if r["ok"]]
         if times:
             row["time_" + who] = min(times)
-    if "verdict" in row:
-        return row
-    if not all(r["ok"] for r, _ in runs["pbrt"]):
-        bad = next(r for r, _ in runs["pbrt"] if not r["ok"])
-        row.update(verdict="pbrt-v4 failed", note=first_error(bad["stderr"]))
+    failed = {who: [r for r, _ in runs[who] if not r["ok"]] for who in runs}
+    if failed["lowdisc"] or failed["pbrt"]:
+        verdict_name = "refused" if failed["lowdisc"] else "pbrt-v4 failed"
+        stderr = (failed["lowdisc"] or failed["pbrt"])[0]["stderr"]
+        message = first_error(stderr).replace(os.path.dirname(scene) + os.sep, "")
+        row.update(verdict=verdict_name, note=message)
         return row
     lowdisc = [read_pfm(image) for _, image in runs["lowdisc"]]
     pbrt = [read_pfm(image) for _, image in runs["pbrt"]]

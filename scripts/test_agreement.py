@@ -180,3 +180,48 @@ def test_side_by_side_has_three_panels(tmp_path):
                            renders(rng, truth, 0.1))
     data = (tmp_path / "s.png").read_bytes()
     assert struct.unpack(">II", data[16:24]) == (3 * SHAPE[1] + 8, SHAPE[0])
+
+
+FAKE_RENDERER = """#!/usr/bin/env python3
+# A stand-in renderer: a noisy grey PFM of the scene's resolution, seeded by
+# --seed; refuses a scene naming "bdpt"; counts its runs in a log.
+import random, re, struct, sys
+args = sys.argv[1:]
+out = args[args.index("-o" if "-o" in args else "--outfile") + 1]
+seed = int(args[args.index("--seed") + 1])
+scene = open([a for a in args if a.endswith(".pbrt")][0]).read()
+open(sys.argv[0] + ".log", "a").write("run\\n")
+if "bdpt" in scene:
+    sys.exit("error: scene.pbrt:1:1: Integrator \\"bdpt\\" is not supported")
+w = int(re.search(r'xresolution" \\[ (\\d+)', scene).group(1))
+h = int(re.search(r'yresolution" \\[ (\\d+)', scene).group(1))
+rng = random.Random(seed)
+with open(out, "wb") as f:
+    f.write(b"PF\\n%d %d\\n-1.0\\n" % (w, h))
+    f.write(struct.pack("<%df" % (3 * w * h), *(0.5 * rng.uniform(0.5, 1.5) for _ in range(3 * w * h))))
+"""
+
+
+def test_harness_end_to_end_with_stand_in_renderers(tmp_path):
+    for name in ("lowdisc", "pbrt"):
+        (tmp_path / name).write_text(FAKE_RENDERER)
+        (tmp_path / name).chmod(0o755)
+    scenes = {"fine": 'Integrator "path"\n', "bidir": 'Integrator "bdpt"\n',
+              "partial": 'Shape "plymesh" "string filename" "models/gone.ply"\n'}
+    for name, text in scenes.items():
+        (tmp_path / "c" / name / "pbrt").mkdir(parents=True)
+        (tmp_path / "c" / name / "pbrt" / "scene-v4.pbrt").write_text(
+            text + 'Film "rgb" "integer xresolution" [ 512 ] "integer yresolution" [ 256 ]\n'
+            'WorldBegin\n')
+    argv = ["--collection", str(tmp_path / "c"), "--lowdisc", str(tmp_path / "lowdisc"),
+            "--pbrt", str(tmp_path / "pbrt"), "--spp", "4", "--out", str(tmp_path / "out")]
+    agreement.main(argv)
+    table = (tmp_path / "out" / "spp4-div4-min128" / "table-spectral.md").read_text()
+    assert "| fine | 128x64 | **agrees** |" in table
+    assert '| bidir | 128x64 | **refused** |' in table and 'Integrator "bdpt"' in table
+    assert "| partial |  | **incomplete** |" in table and "models/gone.ply" in table
+    assert (tmp_path / "out" / "spp4-div4-min128" / "fine" / "spectral" / "side-by-side.png").exists()
+    runs = (tmp_path / "lowdisc.log").read_text().count("run")
+    assert runs == 3 and (tmp_path / "pbrt.log").read_text().count("run") == 2
+    agreement.main(argv)  # resumed: nothing is rendered again
+    assert (tmp_path / "lowdisc.log").read_text().count("run") == runs
