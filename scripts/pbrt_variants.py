@@ -34,11 +34,22 @@ def set_directive(text, name, replacement):
     return text[:world.start()] + replacement + "\n" + text[world.start():]
 
 
+def strip_comments(text):
+    """`text` without its `#` comments (a `#` inside a quoted string stays)."""
+    return re.sub(r'("[^"\n]*")|#[^\n]*', lambda m: m.group(1) or "", text)
+
+
 def set_resolution(text, width, height):
-    """`text` with its Film's x and y resolution set to width and height."""
+    """`text` with its Film's x and y resolution set to width and height
+    (comments are dropped; a resolution the Film leaves at its default is
+    added)."""
+    text = strip_comments(text)
     for axis, value in (("x", width), ("y", height)):
-        pattern = r'"integer %sresolution"\s*\[\s*\d+\s*\]' % axis
-        text, n = re.subn(pattern, '"integer %sresolution" [ %d ]' % (axis, value), text)
+        pattern = r'"integer %sresolution"\s*\[?\s*\d+\s*\]?' % axis
+        param = '"integer %sresolution" [ %d ]' % (axis, value)
+        text, n = re.subn(pattern, param, text)
+        if n == 0:
+            text, n = re.subn(r'^([ \t]*Film\s+"[^"]*")', r"\1 " + param, text, flags=re.M)
         if n != 1:
             raise ValueError("%d Film %sresolution parameters, expected 1" % (n, axis))
     return text
