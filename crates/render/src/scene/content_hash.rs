@@ -9,8 +9,8 @@
 //! ([`crate::view::ViewSpec`]).
 
 use super::{MediaOfScene, Scene, ShapeInfo};
-use crate::medium::{HomogeneousMedium, Medium, MediumInterface};
 use crate::content_hash::{ContentHash, ContentSink};
+use crate::medium::{HomogeneousMedium, Medium, MediumInterface};
 
 impl ContentHash for Scene {
     fn feed<S: ContentSink + ?Sized>(&self, sink: &mut S) {
