@@ -110,6 +110,27 @@ fn tiny_experiment_writes_a_complete_report_and_reuses_the_reference() {
             assert!((rmse - mse.sqrt()).abs() <= 1e-9 * rmse.max(1e-300));
         }
         assert_eq!(s["convergence"].as_array().unwrap().len(), 4); // 1, 2, 4, 8 spp
+        // --quick's 2 seeds: each point is their mean, with an interval
+        // around it, and the slope is the mean of the seeds' fits.
+        for c in s["convergence"].as_array().unwrap() {
+            let seeds: Vec<f64> = c["relmse_seeds"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|v| v.as_f64().unwrap())
+                .collect();
+            assert_eq!(seeds.len(), 2);
+            let mean = c["relmse"].as_f64().unwrap();
+            assert!((mean - (seeds[0] + seeds[1]) / 2.0).abs() <= 1e-12 * mean);
+            let ci = &c["relmse_ci95"];
+            assert!(ci[0].as_f64().unwrap() <= mean && mean <= ci[1].as_f64().unwrap());
+        }
+        let slopes = s["convergence_slopes"].as_array().unwrap();
+        assert_eq!(slopes.len(), 2);
+        let slope = s["convergence_slope"].as_f64().unwrap();
+        let mean = (slopes[0].as_f64().unwrap() + slopes[1].as_f64().unwrap()) / 2.0;
+        assert!((slope - mean).abs() < 1e-12, "{slope} vs {mean}");
+        assert!(s["convergence_slope_ci95"][0].as_f64().unwrap() <= slope);
     }
     let sobol = &samplers[0];
     assert_eq!(sobol["name"], "sobol");
@@ -164,6 +185,7 @@ fn bad_arguments_fail_with_one_line() {
         vec!["experiment", "--conv-res", "0x0"],
         vec!["experiment", "--conv-res", "99999x2"],
         vec!["experiment", "--conv-ref-spp", "0"],
+        vec!["experiment", "--conv-seeds", "0"],
         vec!["experiment", "/nonexistent/scene.pbrt"],
     ] {
         let o = lowdisc(&args);

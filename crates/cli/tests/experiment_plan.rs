@@ -12,8 +12,8 @@ use std::process::Output;
 use common::{lowdisc, temp_dir};
 
 /// The tiny experiment: 32x24, 4 spp, 2 runs of 2 samplers, a 64-spp
-/// reference, and convergence to 8 spp at 32x24 against its own 32-spp
-/// reference, in units of at most 4096 camera samples: the references are
+/// reference, and convergence to 8 spp at 32x24 with 2 seeds against its
+/// own 32-spp reference, in units of at most 4096 camera samples: the references are
 /// cut into bands and sample ranges, the 8-spp convergence points into bands.
 const SETTINGS: [&str; 13] = [
     "--quick",
@@ -31,9 +31,9 @@ const SETTINGS: [&str; 13] = [
     "4096",
 ];
 /// 2 bands x 8 ranges of the reference + 2 x 2 runs + 7 x 2 sweep renders +
-/// 2 bands x 4 ranges of the convergence reference + 2 x (3 whole points +
-/// 2 bands of the 8-spp point).
-const UNITS: usize = 52;
+/// 2 bands x 4 ranges of the convergence reference + 2 samplers x 2 seeds x
+/// (3 whole points + 2 bands of the 8-spp point).
+const UNITS: usize = 62;
 /// The first run's unit.
 const FIRST_RUN: usize = 16;
 
@@ -142,7 +142,7 @@ fn planned_and_merged_equals_the_one_machine_run() {
     assert_eq!(cut_of(UNITS - 1).0, "convergence");
     assert_eq!(cut_of(UNITS - 1).1, 2);
     assert!(
-        printed.contains(&format!("{UNITS} units (indices 0 to 51)")),
+        printed.contains(&format!("{UNITS} units (indices 0 to 61)")),
         "{printed}"
     );
     // The same plan again is kept; a different one is refused.
@@ -167,7 +167,7 @@ fn planned_and_merged_equals_the_one_machine_run() {
     ok(&unit(&planned, 0));
     let err = error_of(&merge(&planned));
     assert!(
-        err.contains("51 of the plan's 52 units are not done (units 1, 2,"),
+        err.contains("61 of the plan's 62 units are not done (units 1, 2,"),
         "{err}"
     );
     // In reverse order: any order gives the same result.
@@ -218,7 +218,7 @@ fn units_are_idempotent_and_survive_failures() {
     // Index out of range.
     let err = error_of(&unit(&out, UNITS));
     assert!(
-        err.contains("unit index 52 is out of range: the plan has 52 units (0 to 51)"),
+        err.contains("unit index 62 is out of range: the plan has 62 units (0 to 61)"),
         "{err}"
     );
 
@@ -247,7 +247,7 @@ fn units_are_idempotent_and_survive_failures() {
     assert!(!unit_file(&out, paper_0, "json").exists());
     let st = status(&out);
     assert!(
-        st.contains("1 done, 0 running, 0 stale, 1 failed, 50 pending"),
+        st.contains("1 done, 0 running, 0 stale, 1 failed, 60 pending"),
         "{st}"
     );
     assert!(
@@ -334,7 +334,7 @@ fn the_merge_refuses_foreign_and_broken_units() {
     std::fs::remove_file(unit_file(&a, 7, "json")).unwrap();
     let err = error_of(&merge(&a));
     assert!(
-        err.contains("1 of the plan's 52 units are not done (units 7)"),
+        err.contains("1 of the plan's 62 units are not done (units 7)"),
         "{err}"
     );
     ok(&unit(&a, 7));

@@ -79,7 +79,7 @@ fn off_a_terminal_progress_is_lines_with_eta_and_a_summary() {
     for stage in [
         "[1/1] sobol: 2 runs at 4 spp",
         "threshold sweep: paper-repro at 7 thresholds",
-        "convergence of sobol: 1 to 8 spp at 32x32",
+        "convergence of sobol: 1 to 8 spp at 32x32, 2 seeds",
     ] {
         assert!(lines.iter().any(|l| l.starts_with(stage)), "{stage}: {log}");
     }

@@ -25,7 +25,7 @@ use crate::results::{
 };
 use crate::source::{Cursor, Measures, UnitSource, join_cut};
 use crate::stats::paired::paired_ratio;
-use crate::stats::{MeanSd, log_log_slope};
+use crate::stats::{MeanSd, Summary, series_over_seeds};
 use crate::sweep::{THRESHOLDS, pixel_discrepancy};
 
 /// Assembles the units of `plan` from `source` ([`assemble`]) and writes
@@ -167,46 +167,49 @@ pub fn assemble(
         conv_own = image;
         (&conv_own, info)
     };
-    // Spp 1, 2, 4, .. conv_max: 2 conv_max - 1 samples per pixel in all.
+    // Spp 1, 2, 4, .. conv_max: 2 conv_max - 1 samples per pixel in all,
+    // for each seed.
+    let spps: Vec<u32> = (0..=config.conv_max.ilog2()).map(|k| 1 << k).collect();
     let per_series = samples(config.conv_res, 2 * config.conv_max - 1);
+    let seeds = u64::from(config.conv_seeds);
+    let view = measures.view_at(config.conv_res)?;
     for (s, &name) in samplers.iter_mut().zip(&config.samplers) {
         let title = format!(
-            "convergence of {}: 1 to {} spp at {}x{}",
-            s.name, config.conv_max, config.conv_res[0], config.conv_res[1]
+            "convergence of {}: 1 to {} spp at {}x{}, {} seed{}",
+            s.name,
+            config.conv_max,
+            config.conv_res[0],
+            config.conv_res[1],
+            seeds,
+            if seeds == 1 { "" } else { "s" }
         );
-        let stage = Stage::begin(observer, &title, per_series);
-        let mut series = Vec::new();
-        let mut spp = 1;
-        let view = measures.view_at(config.conv_res)?;
-        while spp <= config.conv_max {
-            let work = |piece| Work::Convergence {
-                sampler: name,
-                spp,
-                piece,
-            };
-            let cut = convergence_cut(config, spp);
-            let (image, _) = join_cut(
-                &mut cursor,
-                source,
-                &stage,
-                cut,
-                &work,
-                &view,
-                config.spectral,
-            )?;
-            series.push(ConvPoint {
-                spp,
-                relmse: measure(&image, conv_reference)?.linear.relmse,
-            });
-            spp *= 2;
+        let stage = Stage::begin(observer, &title, per_series * seeds);
+        let mut by_seed = Vec::new();
+        for seed in 0..seeds {
+            let mut series = Vec::new();
+            for &spp in &spps {
+                let work = |piece| Work::Convergence {
+                    sampler: name,
+                    seed,
+                    spp,
+                    piece,
+                };
+                let cut = convergence_cut(config, spp);
+                let (image, _) = join_cut(
+                    &mut cursor,
+                    source,
+                    &stage,
+                    cut,
+                    &work,
+                    &view,
+                    config.spectral,
+                )?;
+                series.push(measure(&image, conv_reference)?.linear.relmse);
+            }
+            by_seed.push(series);
         }
         stage.end();
-        let pts: Vec<[f64; 2]> = series
-            .iter()
-            .map(|c| [f64::from(c.spp), c.relmse])
-            .collect();
-        s.convergence_slope = log_log_slope(&pts);
-        s.convergence = series;
+        set_convergence(s, &spps, &by_seed);
     }
     cursor.finish()?;
     let results = Results {
@@ -221,6 +224,27 @@ pub fn assemble(
         renders,
     };
     Ok((results, images))
+}
+
+/// Sets `s`'s convergence series from `by_seed[seed][i]`, the relMSE of
+/// seed `seed` at `spps[i]` samples per pixel ([`series_over_seeds`]).
+fn set_convergence(s: &mut SamplerResult, spps: &[u32], by_seed: &[Vec<f64>]) {
+    let fit = series_over_seeds(spps, by_seed);
+    let interval = |c: &Summary| (c.n > 1).then_some(c.ci95);
+    s.convergence = spps
+        .iter()
+        .zip(&fit.points)
+        .enumerate()
+        .map(|(i, (&spp, point))| ConvPoint {
+            spp,
+            relmse: point.mean,
+            relmse_ci95: interval(point),
+            relmse_seeds: by_seed.iter().map(|e| e[i]).collect(),
+        })
+        .collect();
+    s.convergence_slope = (fit.slope.n > 0).then_some(fit.slope.mean);
+    s.convergence_slope_ci95 = interval(&fit.slope);
+    s.convergence_slopes = fit.slopes;
 }
 
 /// The summary of one sampler's runs (ratios and statistics are filled in
@@ -245,6 +269,8 @@ fn sampler_result(name: SamplerName, runs: Vec<RunResult>, deterministic: bool) 
         statistics: Vec::new(),
         runs,
         convergence_slope: None,
+        convergence_slope_ci95: None,
+        convergence_slopes: Vec::new(),
         convergence: Vec::new(),
     }
 }

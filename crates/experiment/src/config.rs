@@ -62,6 +62,10 @@ pub struct ExperimentConfig {
     pub conv_max: u32,
     /// Resolution of the convergence series.
     pub conv_res: [u32; 2],
+    /// Seeds of each sampler's convergence series (`0..conv_seeds`): the
+    /// log-log slope is fitted per seed and reported with its interval
+    /// over the seeds.
+    pub conv_seeds: u32,
     /// Reference spp of the convergence series.
     pub conv_ref_spp: u32,
     /// Environment map.
@@ -161,6 +165,12 @@ impl ExperimentConfig {
         }
         if !conv_max.is_power_of_two() || conv_max > 1 << 16 {
             bail!("--conv-max must be a power of two up to 65536, got {conv_max}");
+        }
+        if self.conv_seeds == 0 || self.conv_seeds > 1000 {
+            bail!(
+                "--conv-seeds must be between 1 and 1000, got {}",
+                self.conv_seeds
+            );
         }
         let conv_ref_spp = self.conv_ref_spp;
         if conv_ref_spp == 0 || conv_ref_spp > 1 << 20 {

@@ -54,7 +54,8 @@
 //! - `results.json`, schema (every number of the report):
 //!   `{ schema: 1, command: [args], version, git_hash?, machine: {cpu, cores},
 //!   settings: {scene, width, height, spp, runs, ref_spp, ref_sampler, ref_seed,
-//!   max_depth, spectral, threshold, conv_max, conv_res: [w, h], conv_ref_spp,
+//!   max_depth, spectral, threshold, conv_max, conv_res: [w, h], conv_seeds,
+//!   conv_ref_spp,
 //!   unit_samples (the unit budget), ref_ranges: [main, convergence] (the
 //!   sample ranges each reference is cut into), samplers: [names]}, reference: {file, cached, time_s}, convergence_reference:
 //!   {file, cached, time_s}, samplers: [{ name, description, deterministic,
@@ -67,7 +68,9 @@
 //!   masked_mse, masked_relmse, blurred_mse, flip, mse, relmse; see
 //!   [`comparison`]), runs: [{seed, time_s, linear: {mse, relmse, rmse, mae},
 //!   srgb8: {...}, quality: {masked: {mse, relmse, rmse, mae}, blurred_mse,
-//!   flip}}], convergence: [{spp, relmse}], convergence_slope }],
+//!   flip}}], convergence: [{spp, relmse (mean over the seeds), relmse_ci95,
+//!   relmse_seeds}], convergence_slope (mean of the seeds' fits),
+//!   convergence_slope_ci95, convergence_slopes }],
 //!   threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse,
 //!   ratio_to_sobol (a paired ratio, or null)}],
 //!   kept_fraction, wall_time_s, answer: {claimed_ratio, claimed_spp,

@@ -38,13 +38,17 @@ pub struct RunResult {
     pub quality: Quality,
 }
 
-/// One point of a convergence series.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// One point of a convergence series, over its seeds.
+#[derive(Debug, Clone, Serialize)]
 pub struct ConvPoint {
     /// Samples per pixel.
     pub spp: u32,
-    /// relMSE on linear radiance.
+    /// relMSE on linear radiance, the mean over the seeds.
     pub relmse: f64,
+    /// The 95 % interval of that mean (`None` for one seed).
+    pub relmse_ci95: Option<[f64; 2]>,
+    /// Each seed's relMSE (seeds `0..conv_seeds`).
+    pub relmse_seeds: Vec<f64>,
 }
 
 /// Everything measured for one sampler.
@@ -79,10 +83,15 @@ pub struct SamplerResult {
     pub statistics: Vec<MetricStats>,
     /// Every run.
     pub runs: Vec<RunResult>,
-    /// relMSE against spp (seed 0).
+    /// relMSE against spp, over the convergence seeds.
     pub convergence: Vec<ConvPoint>,
-    /// Fitted log-log slope of the convergence series.
+    /// The log-log slope of relMSE against spp: the mean over the seeds of
+    /// each seed's least-squares fit.
     pub convergence_slope: Option<f64>,
+    /// The 95 % interval of that mean (`None` for one seed).
+    pub convergence_slope_ci95: Option<[f64; 2]>,
+    /// Each seed's fitted slope.
+    pub convergence_slopes: Vec<f64>,
 }
 
 /// One threshold of the sweep.
@@ -176,6 +185,8 @@ pub(crate) fn result(name: &str, relmse: f64) -> SamplerResult {
         runs: Vec::new(),
         convergence: Vec::new(),
         convergence_slope: None,
+        convergence_slope_ci95: None,
+        convergence_slopes: Vec::new(),
     }
 }
 

@@ -1,17 +1,18 @@
 //! `DIR/plan.json`: a [`Plan`] on disk, complete enough that the units and
 //! the merge need no other option.
 //!
-//! Schema (format `lowdisc-experiment-plan`, version 2):
+//! Schema (format `lowdisc-experiment-plan`, version 3):
 //!
 //! ```text
-//! { format: "lowdisc-experiment-plan", version: 2,
+//! { format: "lowdisc-experiment-plan", version: 3,
 //!   id: "16 hex digits: FNV-1a of every field below",
 //!   lowdisc_version: "0.1.0"   (units and merge refuse another version),
 //!   cwd: "/abs/folder"         (relative scene and envmap paths start here),
 //!   scene_hash: "16 hex digits" (the scene's content; units check it),
 //!   settings: { scene: path|null, preset: name|null, emitter_border,
 //!     blur_sigma, samplers: [names], spp, runs, resolution: [w, h],
-//!     ref_spp, conv_max, conv_res: [w, h], conv_ref_spp, envmap: path|null,
+//!     ref_spp, conv_max, conv_res: [w, h], conv_seeds, conv_ref_spp,
+//!     envmap: path|null,
 //!     threshold, max_depth, threads: n|null, spectral,
 //!     net: { name, id: "16 hex digits", columns: [[32 words] per
 //!       dimension] } | absent (the built-in Sobol matrices),
@@ -23,7 +24,7 @@
 //!              band, bands, range, ranges }
 //!          | { index, kind: "run", sampler, seed }
 //!          | { index, kind: "sweep", threshold, seed }
-//!          | { index, kind: "convergence", sampler, spp, band, bands } ] }
+//!          | { index, kind: "convergence", sampler, seed, spp, band, bands } ] }
 //! ```
 //!
 //! A reference unit renders band `band` of `bands` (consecutive whole rows
@@ -59,7 +60,7 @@ use crate::stats::{FNV_OFFSET, fnv1a};
 /// The `format` field of `plan.json`.
 pub const FORMAT: &str = "lowdisc-experiment-plan";
 /// The schema version this build writes and reads.
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 
 /// A plan with where it was made, as read from or written to `plan.json`.
 #[derive(Debug, Clone)]
@@ -85,6 +86,7 @@ struct Settings {
     ref_spp: u32,
     conv_max: u32,
     conv_res: [u32; 2],
+    conv_seeds: u32,
     conv_ref_spp: u32,
     envmap: Option<PathBuf>,
     threshold: f64,
@@ -156,6 +158,7 @@ enum UnitDoc {
     },
     Convergence {
         sampler: String,
+        seed: u64,
         spp: u32,
         band: u32,
         bands: u32,
@@ -229,10 +232,12 @@ fn unit_doc(work: &Work) -> UnitDoc {
         Work::Sweep { threshold, seed } => UnitDoc::Sweep { threshold, seed },
         Work::Convergence {
             sampler,
+            seed,
             spp,
             piece,
         } => UnitDoc::Convergence {
             sampler: sampler.as_str().into(),
+            seed,
             spp,
             band: piece.band,
             bands: piece.cut.bands,
@@ -273,11 +278,13 @@ fn work_of(doc: &UnitDoc) -> Result<Work> {
         },
         UnitDoc::Convergence {
             sampler: s,
+            seed,
             spp,
             band,
             bands,
         } => Work::Convergence {
             sampler: sampler(s)?,
+            seed: *seed,
             spp: *spp,
             piece: Piece {
                 band: *band,
@@ -304,6 +311,7 @@ fn settings(c: &ExperimentConfig) -> Settings {
         ref_spp: c.ref_spp,
         conv_max: c.conv_max,
         conv_res: c.conv_res,
+        conv_seeds: c.conv_seeds,
         conv_ref_spp: c.conv_ref_spp,
         envmap: c.envmap.clone(),
         threshold: c.threshold,
@@ -341,6 +349,7 @@ fn config(s: Settings, out: &Path) -> Result<ExperimentConfig> {
         ref_spp: s.ref_spp,
         conv_max: s.conv_max,
         conv_res: s.conv_res,
+        conv_seeds: s.conv_seeds,
         conv_ref_spp: s.conv_ref_spp,
         envmap: s.envmap,
         approximate: s.approximate,

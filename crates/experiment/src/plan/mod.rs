@@ -65,11 +65,13 @@ pub enum Work {
         /// The seed (`0..runs`).
         seed: u64,
     },
-    /// One piece of a point of a sampler's convergence series (seed 0;
-    /// [`convergence_cut`]: bands only).
+    /// One piece of a point of a sampler's convergence series
+    /// ([`convergence_cut`]: bands only).
     Convergence {
         /// The sampler.
         sampler: SamplerName,
+        /// The series' seed (`0..conv_seeds`).
+        seed: u64,
         /// Samples per pixel (a power of two up to `conv_max`).
         spp: u32,
         /// The piece.
@@ -80,7 +82,7 @@ pub enum Work {
 impl Work {
     /// A short description: `reference main band 2 of 5 range 1 of 8`,
     /// `run sobol seed 3`, `sweep threshold 0.5 seed 1`, `convergence sobol
-    /// 64 spp` (a piece: `... band 1 of 2`).
+    /// seed 2 64 spp` (a piece: `... band 1 of 2`).
     pub fn describe(&self) -> String {
         match *self {
             Work::Reference { target, piece } => {
@@ -94,10 +96,11 @@ impl Work {
             Work::Sweep { threshold, seed } => format!("sweep threshold {threshold} seed {seed}"),
             Work::Convergence {
                 sampler,
+                seed,
                 spp,
                 piece,
             } => format!(
-                "convergence {} {spp} spp{}",
+                "convergence {} seed {seed} {spp} spp{}",
                 sampler.as_str(),
                 piece.describe()
             ),
@@ -187,7 +190,9 @@ impl Unit {
             }
             Work::Run { sampler, seed } => (sampler, seed, config.spp),
             Work::Sweep { seed, .. } => (SamplerName::PaperRepro, seed, config.spp),
-            Work::Convergence { sampler, spp, .. } => (sampler, 0, spp),
+            Work::Convergence {
+                sampler, seed, spp, ..
+            } => (sampler, seed, spp),
         }
     }
 
@@ -254,16 +259,19 @@ pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
         reference(&mut work, Target::Convergence);
     }
     for &sampler in &config.samplers {
-        let mut spp = 1;
-        while spp <= config.conv_max {
-            for piece in convergence_cut(config, spp).pieces() {
-                work.push(Work::Convergence {
-                    sampler,
-                    spp,
-                    piece,
-                });
+        for seed in 0..u64::from(config.conv_seeds) {
+            let mut spp = 1;
+            while spp <= config.conv_max {
+                for piece in convergence_cut(config, spp).pieces() {
+                    work.push(Work::Convergence {
+                        sampler,
+                        seed,
+                        spp,
+                        piece,
+                    });
+                }
+                spp *= 2;
             }
-            spp *= 2;
         }
     }
     work.into_iter()

@@ -21,6 +21,7 @@ fn config() -> ExperimentConfig {
         ref_spp: 64,
         conv_max: 8,
         conv_res: [5, 5],
+        conv_seeds: 1,
         conv_ref_spp: 32,
         envmap: None,
         approximate: false,
@@ -74,8 +75,8 @@ fn the_units_come_in_the_order_of_the_one_machine_run() {
     assert_eq!(w[7], "sweep threshold 0 seed 0");
     assert_eq!(w[27], "sweep threshold 1 seed 2");
     assert_eq!(w[28], "reference convergence");
-    assert_eq!(w[29], "convergence sobol 1 spp");
-    assert_eq!(w[36], "convergence halton 8 spp");
+    assert_eq!(w[29], "convergence sobol seed 0 1 spp");
+    assert_eq!(w[36], "convergence halton seed 0 8 spp");
     let sweep = plan.units[10].options(&plan.config).unwrap();
     assert_eq!(sweep.sampler.name, SamplerName::PaperRepro);
     assert_eq!(sweep.sampler.threshold, 0.1);
@@ -189,7 +190,7 @@ fn an_edited_or_foreign_plan_is_refused() {
     );
     let other = text.replace(super::file::FORMAT, "something-else");
     let err = PlanFile::parse(&other, Path::new("d")).unwrap_err();
-    assert!(err.to_string().contains("not a version-2"), "{err}");
+    assert!(err.to_string().contains("not a version-3"), "{err}");
 }
 
 #[test]
@@ -205,11 +206,34 @@ fn relative_paths_start_at_the_planning_folder() {
     assert_eq!(file.plan.config.scene.unwrap(), Path::new("scenes/a.pbrt"));
 }
 
+/// Each convergence series is rendered once per seed, seeds in turn, and
+/// the seed reaches the render's options.
+#[test]
+fn every_convergence_seed_is_a_series_of_its_own() {
+    let mut c = config();
+    c.conv_seeds = 3;
+    let plan = Plan::new(c.clone(), 0, [true, true]);
+    let conv: Vec<&Unit> = plan
+        .units
+        .iter()
+        .filter(|u| matches!(u.work, Work::Convergence { .. }))
+        .collect();
+    // 2 samplers x 3 seeds x 4 points (1, 2, 4, 8 spp).
+    assert_eq!(conv.len(), 2 * 3 * 4);
+    assert_eq!(conv[4].work.describe(), "convergence sobol seed 1 1 spp");
+    assert_eq!(conv[23].work.describe(), "convergence halton seed 2 8 spp");
+    assert_eq!(conv[23].options(&c).unwrap().sampler.seed, 2);
+    assert_eq!(conv[23].options(&c).unwrap().sampler.spp, 8);
+    let one = Plan::new(config(), 0, [true, true]).samples();
+    assert_eq!(plan.samples() - one, 2 * 2 * 25 * 15);
+}
+
 /// The default experiment's settings (with `config()`'s two samplers).
 fn default_settings() -> ExperimentConfig {
     let mut c = config();
     (c.resolution, c.spp, c.ref_spp) = ([256, 144], 16, 1024);
-    (c.conv_res, c.conv_max, c.conv_ref_spp) = ([128, 72], 1024, 8192);
+    (c.conv_res, c.conv_max, c.conv_ref_spp) = ([64, 36], 1024, 8192);
+    c.conv_seeds = 4;
     c
 }
 
@@ -225,20 +249,14 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
             ranges: 1
         }
     );
-    // 128x72 at 8192 spp: one row of tiles is 16.8 M samples, so 2 ranges.
+    // 64x36 at 8192 spp: one row of tiles is 2^23 samples, one band each.
     let conv = Cut {
-        bands: 5,
-        ranges: 2,
+        bands: 3,
+        ranges: 1,
     };
     assert_eq!(reference_cut(&c, Target::Convergence), conv);
-    assert_eq!(
-        convergence_cut(&c, 1024),
-        Cut {
-            bands: 2,
-            ranges: 1
-        }
-    );
-    assert_eq!(convergence_cut(&c, 512), Cut::WHOLE);
+    // 64x36 at 1024 spp: 2.4 M samples.
+    assert_eq!(convergence_cut(&c, 1024), Cut::WHOLE);
     let plan = Plan::new(c.clone(), 0, [false, false]);
     let w: Vec<String> = plan.units.iter().map(|u| u.work.describe()).collect();
     assert_eq!(w[4], "reference main band 5 of 5");
@@ -246,26 +264,21 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
         .iter()
         .position(|d| d.starts_with("reference conv"))
         .unwrap();
-    assert_eq!(w[conv_at], "reference convergence band 1 of 5 range 1 of 2");
-    assert_eq!(
-        w[conv_at + 9],
-        "reference convergence band 5 of 5 range 2 of 2"
-    );
-    let last = &plan.units[conv_at + 9];
-    assert_eq!(
-        last.options(&c).unwrap().sample_range(),
-        SampleRange::new(4096, 8192)
-    );
-    assert_eq!(last.samples(&c), 128 * 8 * 4096);
-    assert!(w.contains(&"convergence halton 1024 spp band 2 of 2".to_string()));
+    assert_eq!(w[conv_at], "reference convergence band 1 of 3");
+    assert_eq!(w[conv_at + 2], "reference convergence band 3 of 3");
+    // The last band is the last 4 rows.
+    let last = &plan.units[conv_at + 2];
+    assert_eq!(last.samples(&c), 64 * 4 * 8192);
+    assert!(w.contains(&"convergence halton seed 3 1024 spp".to_string()));
     // Cutting moves no sample: the plan renders what the whole renders do.
-    let whole = 256 * 144 * 1024 + 128 * 72 * 8192;
-    let runs = (2 + 7) * 3 * 256 * 144 * 16 + 2 * 128 * 72 * 2047;
+    let whole = 256 * 144 * 1024 + 64 * 36 * 8192;
+    let runs = (2 + 7) * 3 * 256 * 144 * 16 + 2 * 4 * 64 * 36 * 2047;
     assert_eq!(plan.samples(), whole + runs);
     // The cache key names the ranges: a cut with other ranges is another file.
     let key = |c: &ExperimentConfig| crate::reference::cache_file(c, Target::Convergence, 1);
     let mut finer = c.clone();
-    finer.unit_samples = Some(1 << 22);
+    finer.unit_samples = Some(1 << 21);
+    // A row of tiles (2^23) in 4 ranges of 2^21.
     assert_eq!(reference_cut(&finer, Target::Convergence).ranges, 4);
     assert_ne!(key(&c), key(&finer));
     finer.unit_samples = Some((1 << 23) + 1);
@@ -276,7 +289,7 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
 fn the_paper_plans_longest_unit_is_a_run() {
     let mut c = default_settings();
     (c.resolution, c.runs, c.ref_spp) = ([1280, 720], 10, 4096);
-    c.conv_res = [640, 360];
+    c.conv_res = [320, 180];
     let run = 1280 * 720 * 16;
     assert_eq!(c.unit_budget(), run);
     assert_eq!(
@@ -286,22 +299,42 @@ fn the_paper_plans_longest_unit_is_a_run() {
             ranges: 6
         }
     );
+    // 320x180 at 8192 spp: a row of tiles (41.9 M samples) per band, in 3
+    // ranges.
     let conv = Cut {
-        bands: 23,
-        ranges: 6,
+        bands: 12,
+        ranges: 3,
     };
     assert_eq!(reference_cut(&c, Target::Convergence), conv);
+    // At 1024 spp two rows of tiles (10.5 M) fit a run, three do not; at
+    // 512, five rows; at 256, eleven of the twelve (the last, 4 pixels
+    // high, is budgeted as a whole row); at 128, all twelve.
     assert_eq!(
         convergence_cut(&c, 1024),
         Cut {
-            bands: 23,
+            bands: 6,
             ranges: 1
         }
     );
+    assert_eq!(
+        convergence_cut(&c, 512),
+        Cut {
+            bands: 3,
+            ranges: 1
+        }
+    );
+    assert_eq!(
+        convergence_cut(&c, 256),
+        Cut {
+            bands: 2,
+            ranges: 1
+        }
+    );
+    assert_eq!(convergence_cut(&c, 128), Cut::WHOLE);
     let plan = Plan::new(c.clone(), 0, [false, false]);
     let longest = plan.units.iter().map(|u| u.samples(&c)).max().unwrap();
     assert_eq!(longest, run);
-    // 270 + 138 reference pieces, 20 runs, 70 sweep renders and 2 x 51
-    // convergence pieces.
-    assert_eq!(plan.units.len(), 270 + 138 + 20 + 70 + 2 * 51);
+    // 270 + 36 reference pieces, 20 runs, 70 sweep renders and 2 samplers
+    // x 4 seeds x (8 + 2 + 3 + 6) convergence pieces.
+    assert_eq!(plan.units.len(), 270 + 36 + 20 + 70 + 2 * 4 * 19);
 }

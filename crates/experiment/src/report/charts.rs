@@ -9,7 +9,7 @@ use lowdisc_plot::{Color, LineChart, Series};
 
 use super::answer::PAPER_CLAIMED_RATIO;
 use crate::config::ExperimentConfig;
-use crate::results::{Results, SweepPoint};
+use crate::results::{Results, SamplerResult, SweepPoint};
 use crate::stats::PairedRatio;
 use crate::stats::summary::interval_factor;
 
@@ -25,10 +25,13 @@ pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<[Pat
             .iter()
             .map(|c| [f64::from(c.spp), c.relmse])
             .collect();
-        let slope = s
-            .convergence_slope
-            .map_or("-".into(), |v| format!("{v:.2}"));
-        chart = chart.with(Series::new(format!("{} (slope {slope})", s.name), pts));
+        let mut series = Series::new(format!("{} (slope {})", s.name, slope_text(s)), pts);
+        let bars: Option<Vec<[f64; 2]>> = s.convergence.iter().map(|c| c.relmse_ci95).collect();
+        // A log axis has no room for an interval reaching zero or below.
+        if let Some(bars) = bars.filter(|b| b.iter().all(|b| b[0] > 0.0)) {
+            series = series.with_bars(bars);
+        }
+        chart = chart.with(series);
     }
     chart.to_canvas().save(&files[0])?;
     let error = sweep_error_chart(config, &results.threshold_sweep);
@@ -65,6 +68,16 @@ pub fn write_charts(config: &ExperimentConfig, results: &Results) -> Result<[Pat
     let title = format!("2x2 pixels, {} samples per pixel", config.spp);
     crate::figure::figure(&panels, 260.0, title)?.save(&files[2])?;
     Ok(files)
+}
+
+/// A sampler's convergence slope with its 95 % interval over the seeds:
+/// `-1.52 [-1.60, -1.44]`, `-1.52` for one seed, `-` without a fit.
+pub fn slope_text(s: &SamplerResult) -> String {
+    match (s.convergence_slope, s.convergence_slope_ci95) {
+        (Some(m), Some([lo, hi])) => format!("{m:.2} [{lo:.2}, {hi:.2}]"),
+        (Some(m), None) => format!("{m:.2}"),
+        (None, _) => "-".into(),
+    }
 }
 
 /// A chart of `series` against the threshold on linear axes, sized to be

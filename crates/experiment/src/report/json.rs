@@ -70,6 +70,7 @@ pub fn json(config: &ExperimentConfig, results: &Results, wall: f64) -> Result<S
             "threshold": config.threshold,
             "conv_max": config.conv_max,
             "conv_res": config.conv_res,
+            "conv_seeds": config.conv_seeds,
             "conv_ref_spp": config.conv_ref_spp,
             "unit_samples": config.unit_budget(),
             "ref_ranges": ref_ranges,

@@ -8,6 +8,7 @@
 use std::fmt::Write as _;
 
 use super::answer::Answer;
+use super::charts::slope_text;
 use crate::comparison::relmse_ratio;
 use crate::config::{ExperimentConfig, REF_SAMPLER, REF_SEED};
 use crate::results::{Results, SamplerResult};
@@ -53,9 +54,7 @@ fn summary_table(results: &Results) -> String {
         "| sampler | relMSE / sobol, paired (95 % interval) | relMSE (linear) | time (s) | convergence slope |\n|---|---|---|---|---|\n",
     );
     for s in &results.samplers {
-        let slope = s
-            .convergence_slope
-            .map_or("-".into(), |v| format!("{v:.2}"));
+        let slope = slope_text(s);
         let _ = writeln!(
             t,
             "| {} | {} | {} | {:.3} ± {:.3} | {slope} |",
@@ -155,7 +154,8 @@ from paired seeds (run i of both with seed i): the geometric mean of the per-see
 (the `relmse` entry of the statistics below; with one run, the ratio of the means). \
 Errors are against the reference; ± is the sample standard deviation over runs. \
 relMSE is `(x-r)^2/(r^2+0.01)` averaged over pixels and channels. \
-The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 1..{}, at {}x{} against a {}-spp reference).\n\n",
+The slope is the least-squares log-log slope of relMSE against spp (spp 1..{}, at {}x{} against a {}-spp reference), \
+fitted for each of {} seeds (0..{}): their mean and its 95 % t interval.\n\n",
         Answer::of(config, results).markdown(),
         config.spp,
         config.runs,
@@ -171,7 +171,9 @@ The slope is the least-squares log-log slope of relMSE against spp (seed 0, spp 
         config.conv_max,
         config.conv_res[0],
         config.conv_res[1],
-        config.conv_ref_spp
+        config.conv_ref_spp,
+        config.conv_seeds,
+        config.conv_seeds
     );
     md.push_str(&summary_table(results));
     let _ = write!(
@@ -239,7 +241,7 @@ convergence_reference: {file, cached, time_s}, \
 samplers: [{name, description, deterministic, time_s, mse, relmse, rmse, mae, srgb8: {mse, relmse, rmse, mae}, \
 relmse_ratio_to_sobol, relmse_ratio_interval, statistics: [{metric, summary: {n, mean, sd, se, ci95}, ratio_to_baseline: \
 {n, ratio, ci95, log_ratio, ratio_of_means, verdict} or null}], \
-runs: [{seed, time_s, linear, srgb8, quality: {masked, blurred_mse, flip}}], convergence: [{spp, relmse}], convergence_slope}], \
+runs: [{seed, time_s, linear, srgb8, quality: {masked, blurred_mse, flip}}], convergence: [{spp, relmse, relmse_ci95, relmse_seeds}], convergence_slope, convergence_slope_ci95, convergence_slopes}], \
 threshold_sweep: [{threshold, star_discrepancy, relmse, srgb8_relmse, ratio_to_sobol}], kept_fraction, wall_time_s, \
 answer: {claimed_ratio, claimed_spp, verdict, paper: {sampler, ratio, ci95}, best: {sampler, ratio, ci95}, line}}`; \
 the other metric summaries are `{mean, sd}`.\n");

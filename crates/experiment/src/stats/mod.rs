@@ -77,6 +77,53 @@ pub fn log_log_slope(points: &[[f64; 2]]) -> Option<f64> {
     (sxx > 0.0).then(|| sxy / sxx)
 }
 
+/// A convergence series rendered with several seeds, summarised over them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeriesOverSeeds {
+    /// Each point's error over the seeds: mean and 95 % interval.
+    pub points: Vec<Summary>,
+    /// Each seed's log-log slope ([`log_log_slope`]; seeds without a fit
+    /// are left out).
+    pub slopes: Vec<f64>,
+    /// The slopes' mean and 95 % interval.
+    pub slope: Summary,
+}
+
+/// Summarises `by_seed[k][i]`, seed `k`'s error at `spp[i]` samples per
+/// pixel: the slope is fitted per seed, then averaged, so its interval
+/// shows how much one seed's fit can be trusted.
+///
+/// ```
+/// use lowdisc_experiment::stats::series_over_seeds;
+///
+/// // Two seeds, errors 1/spp and 2/spp: both slopes are exactly -1.
+/// let s = series_over_seeds(&[1, 2, 4], &[vec![1.0, 0.5, 0.25], vec![2.0, 1.0, 0.5]]);
+/// assert_eq!(s.slopes, [-1.0, -1.0]);
+/// assert_eq!(s.slope.mean, -1.0);
+/// assert_eq!(s.points[0].mean, 1.5);
+/// ```
+pub fn series_over_seeds(spp: &[u32], by_seed: &[Vec<f64>]) -> SeriesOverSeeds {
+    let points = (0..spp.len())
+        .map(|i| Summary::of(&by_seed.iter().map(|s| s[i]).collect::<Vec<_>>()))
+        .collect();
+    let slopes: Vec<f64> = by_seed
+        .iter()
+        .filter_map(|s| {
+            let pts: Vec<[f64; 2]> = spp
+                .iter()
+                .zip(s)
+                .map(|(&n, &e)| [f64::from(n), e])
+                .collect();
+            log_log_slope(&pts)
+        })
+        .collect();
+    SeriesOverSeeds {
+        points,
+        slope: Summary::of(&slopes),
+        slopes,
+    }
+}
+
 /// 64-bit FNV-1a hash of `bytes` continuing from `state` (start with
 /// [`FNV_OFFSET`]); stable across platforms and compiler versions.
 pub fn fnv1a(state: u64, bytes: &[u8]) -> u64 {
@@ -121,6 +168,29 @@ mod tests {
         assert!((log_log_slope(&pts).unwrap() + 1.5).abs() < 1e-12);
         assert_eq!(log_log_slope(&pts[..1]), None);
         assert_eq!(log_log_slope(&[[1.0, 1.0], [1.0, 2.0]]), None);
+    }
+
+    #[test]
+    fn a_slope_over_seeds_is_the_mean_of_each_seeds_fit_with_its_interval() {
+        let spp = [1, 2, 4, 8];
+        // Seeds with slopes -1 and -2 (errors c / spp^k): mean -1.5, sd
+        // 1/sqrt(2), se 1/2, and t(0.975, 1) = 12.706.
+        let series = |c: f64, k: f64| spp.iter().map(|&n| c * f64::from(n).powf(-k)).collect();
+        let s = series_over_seeds(&spp, &[series(2.0, 1.0), series(0.5, 2.0)]);
+        assert!((s.slopes[0] + 1.0).abs() < 1e-12 && (s.slopes[1] + 2.0).abs() < 1e-12);
+        assert!((s.slope.mean + 1.5).abs() < 1e-12);
+        assert!((s.slope.se - 0.5).abs() < 1e-12);
+        assert!((s.slope.ci95[1] - (-1.5 + 12.706 * 0.5)).abs() < 1e-3);
+        // Each point is the mean over the seeds: (2 + 0.5) / 2 at 1 spp.
+        assert_eq!(s.points[0].mean, 1.25);
+        assert_eq!(s.points[0].n, 2);
+        // One seed: its own slope, no interval.
+        let one = series_over_seeds(&spp, &[series(1.0, 1.5)]);
+        assert!((one.slope.mean + 1.5).abs() < 1e-12);
+        assert!(one.slope.ci95[0].is_nan());
+        // A seed whose series cannot be fitted (all errors zero) is left out.
+        let zero = series_over_seeds(&spp, &[series(1.0, 1.0), vec![0.0; 4]]);
+        assert_eq!(zero.slopes.len(), 1);
     }
 
     #[test]

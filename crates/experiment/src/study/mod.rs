@@ -163,6 +163,7 @@ impl StudyConfig {
             ref_spp: self.ref_spp,
             conv_max: 1,
             conv_res: self.resolution,
+            conv_seeds: 1,
             conv_ref_spp: self.ref_spp,
             envmap: scene.envmap.clone(),
             approximate: scene.approximate,
