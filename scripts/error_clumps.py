@@ -125,6 +125,10 @@ def write_png(path, images, scale, k=4, gap=8):
         f.write(chunk(b"IDAT", zlib.compress(bytes(raw))) + chunk(b"IEND", b""))
 
 
+def geometric_mean(xs):
+    return math.exp(sum(math.log(x) for x in xs) / len(xs))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--reference", required=True)
@@ -134,7 +138,6 @@ def main():
     ap.add_argument("sets", nargs="+", metavar="LABEL=RENDERS")
     args = ap.parse_args()
     ref = read_pfm(args.reference)
-    gm = lambda xs: math.exp(sum(math.log(x) for x in xs) / len(xs))
     print(f"| set | renders | MSE | blurred MSE (r={args.blur}) | adjacent corr. x, y "
           f"| power below {args.cutoff} / white |")
     print("|---|---|---|---|---|---|")
@@ -149,11 +152,9 @@ def main():
                 firsts.append(box_blur(e, args.blur))
             rows.append(measures(e, args.blur, args.cutoff))
         n = len(rows)
-        print(
-            f"| {label} | {n} | {gm([r[0] for r in rows]):.4g} | {gm([r[1] for r in rows]):.4g} "
-            f"| {sum(r[2] for r in rows) / n:.3f}, {sum(r[3] for r in rows) / n:.3f} "
-            f"| {gm([r[4] for r in rows]):.2f} |"
-        )
+        mse, blurred, low = (geometric_mean([r[i] for r in rows]) for i in (0, 1, 4))
+        cx, cy = (sum(r[i] for r in rows) / n for i in (2, 3))
+        print(f"| {label} | {n} | {mse:.4g} | {blurred:.4g} | {cx:.3f}, {cy:.3f} | {low:.2f} |")
     if args.png:
         values = sorted(abs(v) for e in firsts for r in e for v in r)
         write_png(args.png, firsts, values[int(0.98 * (len(values) - 1))] or 1.0)
