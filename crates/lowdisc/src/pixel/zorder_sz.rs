@@ -49,13 +49,14 @@
 //! the number of samples that pick the coating's reflection (say) would be
 //! the same step function of the reflectance in every pixel, and the error
 //! of neighbouring pixels would share its sign over whole regions (clumps
-//! of low-frequency error, as on the glossy car of bmw-m6). The digits
-//! below the block position are those of the pixel's permuted Morton index,
-//! lowest level first, as Sobol's dimension 0 has them in `zsobol`: each
-//! pixel's values are jittered within their strata by its own offset, and
-//! the `4^j spp` values of an aligned `2^j x 2^j` block of pixels lie in
-//! distinct intervals of width `1 / (4^j spp)` (tested), while the leading
-//! `m` digits, and with them the per-pixel nets, are unchanged.
+//! of low-frequency error, as on the coated floor and car of bmw-m6). The
+//! digits below the block position are those of the pixel's permuted
+//! Morton index, lowest level first, as Sobol's dimension 0 has them in
+//! `zsobol`: each pixel's values are jittered within their strata by its
+//! own offset, and the `4^j spp` values of an aligned `2^j x 2^j` block of
+//! pixels lie in distinct intervals of width `1 / (4^j spp)` (tested),
+//! while the leading `m` digits, and with them the per-pixel nets, are
+//! unchanged.
 //!
 //! ## Limits
 //! * `spp` a power of two with odd `m` (2, 8, 32...): a pixel's block is
