@@ -144,7 +144,7 @@ const PINNED_SAMPLERS: &[(SamplerName, [f32; 5])] = &[
     ),
     (
         SamplerName::ZOrderSz,
-        [0.8147841, 0.5291887, 0.69221556, 0.39676815, 0.8844348],
+        [0.8147841, 0.5291887, 0.69221556, 0.39676815, 0.83204716],
     ),
     (
         SamplerName::CascadedSobol,

@@ -17,10 +17,12 @@
 //! The sampler's values are *slots* `(group, lane)`. Every group has its
 //! own dimension key, hence its own index permutation and scramble seeds;
 //! within a group, lanes 0-3 are the four dimensions of [`crate::sz`] at
-//! the group's permuted index and lane 4 ([`INDEX_LANE`]) is the sample's
-//! position in its pixel's block, `(index mod 2^m) / 2^m` (`m = ceil(log2
-//! spp)`), the extra Hammersley coordinate that turns the block of `4^j`
-//! points into a (0,j,5)-net in base 4. Lanes (0, 1) and (2, 3) are binary
+//! the group's permuted index and lane 4 ([`INDEX_LANE`]) leads with the
+//! sample's position in its pixel's block, `(index mod 2^m) / 2^m` (`m =
+//! ceil(log2 spp)`), the extra Hammersley coordinate that turns the block
+//! of `4^j` points into a (0,j,5)-net in base 4, and continues below those
+//! `m` digits with the radical inverse of the pixel's permuted Morton
+//! digits (see [Pixel digits](#pixel-digits)). Lanes (0, 1) and (2, 3) are binary
 //! (0,2)-sequences, so every 2-D value below is a (0,m,2)-net per pixel at
 //! `spp = 2^m`. The slots follow the path tracer's dimension order (film
 //! offset; lens at sampler dimensions 0-1; then per vertex light choice,
@@ -38,6 +40,23 @@
 //! position) of each pixel is a (0,m/2,5)-net in base 4. Other groups are
 //! padded (independent index orders), as in `zsobol`. For any other
 //! consumer it is still a valid padded Z-order sampler.
+//!
+//! ## Pixel digits
+//! The block position alone is the same set of `2^m` values in every pixel,
+//! and the scramble of a group is the same for every pixel (as in
+//! `zsobol`), so without the lower digits each pixel would get exactly the
+//! same light choices and, at the first vertex, the same BSDF lobe values:
+//! the number of samples that pick the coating's reflection (say) would be
+//! the same step function of the reflectance in every pixel, and the error
+//! of neighbouring pixels would share its sign over whole regions (clumps
+//! of low-frequency error, as on the coated floor and car of bmw-m6). The
+//! digits below the block position are those of the pixel's permuted
+//! Morton index, lowest level first, as Sobol's dimension 0 has them in
+//! `zsobol`: each pixel's values are jittered within their strata by its
+//! own offset, and the `4^j spp` values of an aligned `2^j x 2^j` block of
+//! pixels lie in distinct intervals of width `1 / (4^j spp)` (tested),
+//! while the leading `m` digits, and with them the per-pixel nets, are
+//! unchanged.
 //!
 //! ## Limits
 //! * `spp` a power of two with odd `m` (2, 8, 32...): a pixel's block is
@@ -82,6 +101,28 @@ pub fn slot(d: u32) -> (u64, u32) {
     }
 }
 
+/// The unscrambled word of the index lane at permuted index `index` with
+/// `block_bits` (`m`) bits per pixel block: the block position `index mod
+/// 2^m` as the leading `m` binary digits, then the pixel's permuted Morton
+/// digits `index >> m`, lowest first (their radical inverse), as the
+/// digits below. The leading digits make the per-pixel 5-D net; the lower
+/// ones jitter each pixel's values within their strata differently, so
+/// that the `4^j spp` values of an aligned `2^j x 2^j` block of pixels
+/// fall in distinct intervals of width `1 / (4^j spp)` (for
+/// `2j + m <= 32`).
+fn index_lane_word(index: u64, block_bits: u32) -> u32 {
+    let block = (index as u32 & low_mask(block_bits))
+        .checked_shl(32 - block_bits)
+        .unwrap_or(0);
+    let pixel = (index.checked_shr(block_bits).unwrap_or(0) as u32).reverse_bits();
+    block | pixel.checked_shr(block_bits).unwrap_or(0)
+}
+
+/// The mask of the `bits` lowest bits (`bits <= 32`).
+fn low_mask(bits: u32) -> u32 {
+    1u32.checked_shl(bits).map_or(u32::MAX, |b| b - 1)
+}
+
 /// Z-order sampler over the base-4 (0,4)-sequence; see the module
 /// documentation.
 #[derive(Debug, Clone)]
@@ -90,8 +131,6 @@ pub struct ZOrderSzSampler {
     order: ZSobolSampler,
     strategy: RandomizeStrategy,
     seed: u64,
-    /// Mask of the index bits inside a pixel's block (`2^m - 1`).
-    block_mask: u32,
     /// `m`, the bits of a pixel's block.
     block_bits: u32,
     dimension: u32,
@@ -115,7 +154,6 @@ impl ZOrderSzSampler {
             order,
             strategy,
             seed,
-            block_mask: ((1u64 << block_bits) - 1) as u32,
             block_bits,
             dimension: 0,
             cache: GroupCache::default(),
@@ -125,10 +163,7 @@ impl ZOrderSzSampler {
     /// The unscrambled word of `lane` at sequence index `index`.
     fn lane_word(&self, index: u64, lane: u32) -> u32 {
         if lane == INDEX_LANE {
-            // The block position as the leading m digits.
-            (index as u32 & self.block_mask)
-                .checked_shl(32 - self.block_bits)
-                .unwrap_or(0)
+            index_lane_word(index, self.block_bits)
         } else {
             crate::sz::sample(index as u32, lane)
         }

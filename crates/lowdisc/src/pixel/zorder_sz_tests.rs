@@ -78,6 +78,63 @@ fn film_choice_and_light_of_every_pixel_are_a_0m5_net_in_base_4() {
     }
 }
 
+/// The sampler dimensions read from the index lane that the path tracer
+/// uses: light choice and lobe of vertex 0, light choice of vertex 1.
+const INDEX_LANE_DIMS: [u32; 3] = [2, 5, 9];
+
+#[test]
+fn index_lane_values_of_a_morton_block_of_pixels_are_in_distinct_intervals() {
+    // Neighbouring pixels must not reuse each other's light choices or
+    // lobe values: the 4^j spp values of an aligned 2^j x 2^j block lie in
+    // 4^j spp distinct intervals (a pixel alone: spp intervals).
+    for &d in &INDEX_LANE_DIMS {
+        assert_eq!(slot(d).1, INDEX_LANE, "dimension {d}");
+    }
+    for strategy in [RandomizeStrategy::None, RandomizeStrategy::FastOwen] {
+        for (spp, m) in [(1u32, 0u32), (4, 2), (16, 4), (64, 6)] {
+            let mut s = ZOrderSzSampler::new(spp, [16, 16], strategy, 7).unwrap();
+            for (side, j) in [(1u32, 0u32), (2, 1), (4, 2), (8, 3)] {
+                let bits = 2 * j + m;
+                for corner in [[0, 0], [side, side], [8, 0]] {
+                    for &d in &INDEX_LANE_DIMS {
+                        let mut cells: Vec<u32> = block(corner, side)
+                            .into_iter()
+                            .flat_map(|p| (0..spp).map(move |k| (p, k)))
+                            .map(|(p, k)| {
+                                s.start_pixel_sample(p, k, d);
+                                s.get_1d_word().checked_shr(32 - bits).unwrap_or(0)
+                            })
+                            .collect();
+                        cells.sort_unstable();
+                        cells.dedup();
+                        assert_eq!(
+                            cells.len(),
+                            (spp << (2 * j)) as usize,
+                            "{strategy:?} spp={spp} side={side} {corner:?} dimension {d}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_index_lane_word_leads_with_the_block_position() {
+    for (index, m, want) in [
+        (
+            0b1011_0110u64,
+            4u32,
+            0x6000_0000u32 | (0b1011u32.reverse_bits() >> 4),
+        ),
+        (0b1011_0110, 0, 0b1011_0110u32.reverse_bits()),
+        (0b10, 1, 1u32.reverse_bits() >> 1),
+        (u64::MAX, 32, u32::MAX),
+    ] {
+        assert_eq!(index_lane_word(index, m), want, "{index:#b} m={m}");
+    }
+}
+
 #[test]
 fn morton_blocks_of_pixels_are_nets_of_the_four_sequence_lanes() {
     // Film offset and light position (lanes 0-3 of group 0): 16 spp in a
@@ -138,7 +195,10 @@ fn unscrambled_values_are_the_sequence_at_the_permuted_index() {
         [w[5], w[6]],
         [2, 3].map(|d| crate::sz::sample(film as u32, d))
     );
-    assert_eq!(w[4], ((film as u32) & 15) << 28, "choice: block position");
+    assert_eq!(w[4], index_lane_word(film, 4), "choice");
+    assert_eq!(w[4] >> 28, (film as u32) & 15, "choice: block position");
+    let pixel_digits = ((film >> 4) as u32).reverse_bits() >> 4;
+    assert_eq!(w[4] & 0x0fff_ffff, pixel_digits, "choice: pixel digits");
     assert_eq!(
         [w[2], w[3]],
         [0, 1].map(|d| crate::sz::sample(lens as u32, d))
@@ -147,7 +207,8 @@ fn unscrambled_values_are_the_sequence_at_the_permuted_index() {
         [w[8], w[9]],
         [2, 3].map(|d| crate::sz::sample(lens as u32, d))
     );
-    assert_eq!(w[7], ((lens as u32) & 15) << 28, "lobe: block position");
+    assert_eq!(w[7], index_lane_word(lens, 4), "lobe");
+    assert_eq!(w[7] >> 28, (lens as u32) & 15, "lobe: block position");
 }
 
 #[test]
