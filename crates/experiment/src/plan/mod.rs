@@ -155,9 +155,7 @@ impl Unit {
             _ => None,
         };
         let net = match self.work {
-            Work::Run { .. } | Work::Convergence { .. } if sampler.takes_net() => {
-                Some(config.net.clone())
-            }
+            Work::Run { .. } | Work::Convergence { .. } if sampler.takes_net() => Some(config.net),
             _ => None,
         };
         let piece = self.work.piece();
