@@ -5,6 +5,7 @@ with a message naming the argument, before anything reaches the extension."""
 from __future__ import annotations
 
 import operator
+import os
 from typing import Any
 
 import numpy as np
@@ -111,3 +112,34 @@ def workers(value: Any) -> int:
         raise ValueError(f"Invalid number of workers: {w}, must be -1 or > 0")
     # More threads than any machine's cores gain nothing (the extension's cap).
     return min(w, 1024)
+
+
+#: The most dimensions a net may have (``lowdisc::net::MAX_NET_DIMENSIONS``).
+MAX_NET_DIMENSIONS = 1 << 16
+
+
+def net(value: Any) -> str | np.ndarray | None:
+    """A ``net=`` argument: ``None``; a built-in net's name or a file (str or
+    path-like, returned as a str); or generator matrices, an integer array
+    of shape ``(dims, 32)`` with values in ``[0, 2**32)``, returned as a
+    C-contiguous uint32 array. Anything else raises ``ValueError`` (a
+    matrix that is no net is refused by the extension, also a
+    ``ValueError``)."""
+    if value is None:
+        return None
+    if isinstance(value, (str, bytes)) or hasattr(value, "__fspath__"):
+        return os.fsdecode(os.fspath(value))
+    array = np.asarray(value)
+    if array.dtype.kind not in "iu":
+        raise ValueError("net must be a name, a path or an integer array of generator "
+                         f"matrices of shape (dims, 32), got dtype {array.dtype}")
+    if array.ndim != 2 or array.shape[1] != 32:
+        raise ValueError(f"net must have shape (dims, 32) (one row of 32 column words per "
+                         f"dimension), got {array.shape}")
+    if not 1 <= array.shape[0] <= MAX_NET_DIMENSIONS:
+        raise ValueError(f"net must have 1 to {MAX_NET_DIMENSIONS} dimensions, "
+                         f"got {array.shape[0]}")
+    if array.min() < 0 or array.max() > 2**32 - 1:
+        raise ValueError("net's column words must be in [0, 2**32), "
+                         f"got values from {array.min()} to {array.max()}")
+    return np.ascontiguousarray(array, dtype=np.uint32)

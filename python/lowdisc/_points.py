@@ -9,6 +9,8 @@ not depend on the thread count.
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import numpy.typing as npt
 
@@ -247,7 +249,8 @@ def sampler_names() -> list[str]:
 
 
 def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
-                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0) -> np.ndarray:
+                  pixels: npt.ArrayLike, dims: int = 2, seed: int = 0, *,
+                  net: str | os.PathLike | npt.ArrayLike | None = None) -> np.ndarray:
     """The samples the renderer's pixel sampler ``sampler`` gives ``pixels``.
 
     Returns a float32 array ``(len(pixels), spp, dims)``: for each pixel
@@ -279,6 +282,12 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
         Values per sample (at least the 2 of the pixel offset).
     seed : int, default 0
         The sampler's seed.
+    net : str, path-like or array_like, optional
+        The generator matrices of the Sobol samplers, as :func:`render`
+        takes them (``--net`` of ``lowdisc points``): a built-in net's name,
+        a file, or an integer array ``(dims, 32)`` of matrix columns, the
+        layout of :func:`sobol_matrices`. A sampler that reads no net
+        refuses any but ``"sobol"`` with ``ValueError``.
     tile_size : int, default 16
         The renderer's tile side.
 
@@ -292,6 +301,11 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
     >>> import lowdisc
     >>> lowdisc.pixel_samples("zsobol", 16, (64, 64), [(3, 5)], 6, seed=1).shape
     (1, 16, 6)
+    >>> plain = lowdisc.pixel_samples("zsobol-4d", 16, (64, 64), [(3, 5)], 6, seed=1)
+    >>> onetwo = lowdisc.pixel_samples("zsobol-4d", 16, (64, 64), [(3, 5)], 6, seed=1,
+    ...                                net="onetwo")
+    >>> bool((plain[..., :2] == onetwo[..., :2]).all())  # the same dimensions 0-1
+    True
     """
     if not isinstance(sampler, str):
         raise TypeError(f"sampler must be a name (str), got {type(sampler).__name__}")
@@ -315,6 +329,7 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
         np.ascontiguousarray(array, dtype=np.uint32),
         _checks.integer(dims, "dims", low=2, high=2**32 - 1),
         _checks.seed(seed),
+        _checks.net(net),
     )
 
 

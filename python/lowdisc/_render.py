@@ -20,6 +20,7 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from . import _checks, _lowdisc
 
@@ -30,7 +31,8 @@ BUILTIN_SCENES: tuple[str, ...] = tuple(_lowdisc.builtin_scenes())
 
 
 def render(scene: str | os.PathLike = "cornell", *, sampler: str | None = None,
-           spp: int | None = None, seed: int | None = None, spectral: bool = False,
+           net: str | os.PathLike | npt.ArrayLike | None = None, spp: int | None = None,
+           seed: int | None = None, spectral: bool = False,
            threads: int | None = None, max_depth: int | None = None,
            resolution: tuple[int, int] | None = None, threshold: float | None = None,
            paper_all_dims: bool | None = None, approximate: bool = False,
@@ -53,6 +55,22 @@ def render(scene: str | os.PathLike = "cornell", *, sampler: str | None = None,
     sampler : str, optional
         A pixel sampler, any of :func:`sampler_names` (the CLI's
         ``--sampler``).
+    net : str, path-like or array_like, optional
+        The generator matrices of the Sobol samplers (the CLI's ``--net``):
+        a built-in net's name (``"sobol"``, Joe & Kuo's matrices, the
+        default; ``"onetwo"``), a file of Joe & Kuo direction numbers or of
+        matrices, or the matrices themselves: an integer array of shape
+        ``(dims, 32)`` (uint32, or any integers in ``[0, 2**32)``) whose
+        row ``j`` holds dimension ``j``'s 32 columns, column ``c`` the digit
+        word that bit ``c`` of the sample index contributes, bit 31 the
+        first binary digit: the layout of :func:`sobol_matrices` and of a
+        matrix file's lines. Every dimension must be a (0,1)-sequence (the
+        leading ``k x k`` block of its matrix nonsingular for every ``k``).
+        Only the Sobol samplers read a net (``sobol``, ``sobol-xor``,
+        ``sobol-owen``, ``sobol-fast-owen``, ``sobol-lms``,
+        ``padded-sobol``, ``padded-sobol-lms``, ``zsobol``, ``zsobol-4d``,
+        ``zsobol-joint``); the global ``sobol*`` samplers need at least 3
+        dimensions, ``zsobol-4d`` and ``zsobol-joint`` at least 4.
     spp : int, optional
         Samples per pixel.
     seed : int, optional
@@ -87,7 +105,9 @@ def render(scene: str | os.PathLike = "cornell", *, sampler: str | None = None,
     ------
     ValueError
         A bad setting, sampler name or scene, with the CLI's one-line message
-        (a scene file's errors name its ``file:line:column``).
+        (a scene file's errors name its ``file:line:column``); a ``net``
+        that is not a net (wrong shape or dtype, a singular matrix, an
+        unreadable or malformed file) or given to a sampler that reads none.
     KeyboardInterrupt
         Ctrl-C during the render.
 
@@ -108,8 +128,30 @@ def render(scene: str | os.PathLike = "cornell", *, sampler: str | None = None,
     ...                        threads=1)
     >>> bool((again == image).all())  # the same bits on any number of threads
     True
+
+    A net of one's own, as generator matrices: ``zsobol-4d`` reads
+    dimensions 0-3, so Joe & Kuo's first four matrices render what the
+    default does, and another net (here with dimensions 2 and 3 swapped)
+    renders another image:
+
+    >>> m = lowdisc.sobol_matrices(4)
+    >>> m.shape, m.dtype
+    ((4, 32), dtype('uint32'))
+    >>> def box(net):
+    ...     return lowdisc.render("cornell", sampler="zsobol-4d", net=net, spp=4,
+    ...                           resolution=(32, 24))
+    >>> bool((box(m) == box(None)).all())
+    True
+    >>> bool((box(m[[0, 1, 3, 2]]) != box(None)).any())
+    True
+    >>> singular = m.copy()
+    >>> singular[2, 5] = singular[2, 4]
+    >>> box(singular)
+    Traceback (most recent call last):
+    ...
+    ValueError: net array: dimension 2 is not a (0,1)-sequence: its leading 6x6 block is singular
     """
-    request = _request(scene, sampler, spp, seed, max_depth, resolution, threads,
+    request = _request(scene, sampler, net, spp, seed, max_depth, resolution, threads,
                        threshold, paper_all_dims)
     callback = _TextBar() if progress is True else (progress or None)
     if callback is not None and not callable(callback):
@@ -124,7 +166,7 @@ def render(scene: str | os.PathLike = "cornell", *, sampler: str | None = None,
     return image
 
 
-def _request(scene, sampler, spp, seed, max_depth, resolution, threads, threshold,
+def _request(scene, sampler, net, spp, seed, max_depth, resolution, threads, threshold,
              paper_all_dims) -> tuple:
     """The arguments checked and normalised, in the extension's order."""
     scene = os.fspath(scene)
@@ -140,7 +182,7 @@ def _request(scene, sampler, spp, seed, max_depth, resolution, threads, threshol
         if len(resolution) != 2:
             raise ValueError(f"resolution must be (width, height), got {resolution!r}")
         resolution = tuple(_checks.integer(v, "resolution", high=2**32 - 1) for v in resolution)
-    return (scene, sampler, maybe(spp, "spp", high=2**32 - 1),
+    return (scene, sampler, _checks.net(net), maybe(spp, "spp", high=2**32 - 1),
             None if seed is None else _checks.seed(seed),
             maybe(max_depth, "max_depth", high=2**32 - 1), resolution,
             maybe(threads, "threads", high=2**32 - 1),

@@ -162,6 +162,18 @@ LONG_METRICS = {
     # The 2-D sweep alone, about ten seconds on two idle cores.
     "star_discrepancy_2d": ("x = np.random.default_rng(0).random((700_000, 2))\n"
                             "lowdisc.star_discrepancy(x, max_work=1e11)\n"),
+    # The bounds' random boxes and threshold accepting: about a minute.
+    "star_bounds": ("x = np.random.default_rng(0).random((2_000_000, 3))\n"
+                    "lowdisc.star_bounds(x)\n"),
+    # In 20-D the distance grid has one cell: every point scans all others
+    # (n^2 d, many minutes).
+    "min_distance": ("x = np.random.default_rng(0).random((200_000, 20))\n"
+                     "lowdisc.min_distance(x)\n"),
+    "nearest_neighbour_distances": ("x = np.random.default_rng(0).random((200_000, 20))\n"
+                                    "lowdisc.nearest_neighbour_distances(x, metric='toroidal')\n"),
+    # n K^2 with K = 4096: tens of seconds.
+    "power_spectrum": ("x = np.random.default_rng(0).random((1_000, 2))\n"
+                       "lowdisc.power_spectrum(x, max_frequency=4096)\n"),
 }
 
 

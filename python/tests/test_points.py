@@ -116,11 +116,11 @@ def test_qmcpy_reproduces_lowdiscs_sobol_from_the_exported_matrices():
                           lowdisc.sobol(256, 5, order="natural"))
 
 
-def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed):
+def cli_pixel_rows(binary, sampler, pixel, spp, res, extra, seed, net=None):
     out = subprocess.run(
         [str(binary), "points", "--sampler", sampler, "--pixel", f"{pixel[0]},{pixel[1]}",
          "--spp", str(spp), "--res", f"{res[0]}x{res[1]}", "--dims", str(extra),
-         "--seed", str(seed)],
+         "--seed", str(seed), *(["--net", str(net)] if net is not None else [])],
         check=True, capture_output=True, text=True).stdout
     return np.array([[float(v) for v in line.split()] for line in out.splitlines()])
 
@@ -137,6 +137,31 @@ def test_pixel_samples_equal_the_renderers_as_the_cli_prints_them(lowdisc_bin, s
         expected = rows.copy()
         expected[:, :2] -= pixel  # the CLI prints film positions
         assert np.array_equal(got[p].astype(np.float64), expected), (sampler, pixel)
+
+
+@pytest.mark.parametrize("sampler", ["zsobol-4d", "sobol-owen", "padded-sobol-lms"])
+def test_pixel_samples_with_a_net_equal_the_clis(lowdisc_bin, tmp_path, sampler):
+    # A net as numpy matrices, and the same net as the CLI's matrix file.
+    matrices = lowdisc.sobol_matrices(6)[[0, 1, 4, 5, 2, 3]]
+    file = tmp_path / "net.txt"
+    file.write_text("".join(" ".join(hex(c) for c in row) + "\n" for row in matrices))
+    pixels = [(0, 0), (17, 3)]
+    got = lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, seed=3, net=matrices)
+    assert np.array_equal(lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, seed=3,
+                                                net=file), got)
+    for p, pixel in enumerate(pixels):
+        rows = cli_pixel_rows(lowdisc_bin, sampler, pixel, 8, (40, 20), 5, 3, net=file)
+        rows[:, :2] -= pixel
+        assert np.array_equal(got[p].astype(np.float64), rows), (sampler, pixel)
+    plain = lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, seed=3)
+    if sampler != "padded-sobol-lms":  # it reads dimensions 0-1 only, unchanged here
+        assert not np.array_equal(got, plain)
+    else:
+        assert np.array_equal(got, plain)
+    with pytest.raises(ValueError, match="does not take generator matrices"):
+        lowdisc.pixel_samples("halton", 8, (40, 20), pixels, 7, net=matrices)
+    with pytest.raises(ValueError, match=r"shape \(dims, 32\)"):
+        lowdisc.pixel_samples(sampler, 8, (40, 20), pixels, 7, net=matrices[:, :16])
 
 
 def test_the_paper_stream_is_the_tiles_not_the_pixels_own():

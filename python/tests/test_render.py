@@ -139,6 +139,101 @@ def test_ctrl_c_stops_a_render_promptly():
     assert time.monotonic() - sent < 5.0
 
 
+SMALL = dict(spp=3, seed=5, resolution=(24, 16), threads=2)
+
+
+def write_matrix_file(path, matrices) -> None:
+    """A matrix file (lowdisc::net's format): one dimension per line, its 32
+    column words in hexadecimal."""
+    lines = ["# generator matrices, one dimension per line"]
+    lines += [" ".join(f"{int(c):#010x}" for c in row) for row in matrices]
+    path.write_text("\n".join(lines) + "\n")
+
+
+@pytest.mark.parametrize("sampler, dims", [("sobol-owen", lowdisc.SOBOL_DIMENSIONS),
+                                           ("zsobol-4d", 4), ("padded-sobol", 2)])
+def test_sobols_own_matrices_as_numpy_render_what_no_net_renders(sampler, dims):
+    plain = lowdisc.render("cornell", sampler=sampler, **SMALL)
+    matrices = lowdisc.sobol_matrices(dims)
+    assert np.array_equal(lowdisc.render("cornell", sampler=sampler, net=matrices, **SMALL),
+                          plain)
+    # Any integer dtype holding the same words, and the built-in name.
+    as_int64 = matrices.astype(np.int64)
+    assert np.array_equal(lowdisc.render("cornell", sampler=sampler, net=as_int64, **SMALL),
+                          plain)
+    assert np.array_equal(lowdisc.render("cornell", sampler=sampler, net="sobol", **SMALL),
+                          plain)
+
+
+@pytest.mark.parametrize("sampler", ["zsobol-4d", "sobol-owen"])
+def test_a_net_from_numpy_renders_what_the_binary_renders_with_its_file(lowdisc_bin, tmp_path,
+                                                                        sampler):
+    # A prototype net: Joe & Kuo's first 8 dimensions with dimensions 2-3
+    # and 4-5 swapped and dimension 6 replaced by van der Corput.
+    matrices = lowdisc.sobol_matrices(8)[[0, 1, 3, 2, 5, 4, 0, 7]]
+    file = tmp_path / "mine.txt"
+    write_matrix_file(file, matrices)
+    flags = ["--sampler", sampler, "--spp", "3", "--seed", "5", "--res", "24x16"]
+    theirs = cli_render(lowdisc_bin, tmp_path, *flags, "--net", str(file))
+    ours = lowdisc.render("cornell", sampler=sampler, net=matrices, **SMALL)
+    assert np.array_equal(ours, theirs)
+    assert np.array_equal(lowdisc.render("cornell", sampler=sampler, net=file, **SMALL), theirs)
+    assert np.array_equal(lowdisc.render("cornell", sampler=sampler, net=str(file), **SMALL),
+                          theirs)
+    assert not np.array_equal(ours, lowdisc.render("cornell", sampler=sampler, **SMALL))
+
+
+def test_a_built_in_net_renders_what_the_binary_renders(lowdisc_bin, tmp_path):
+    flags = ["--sampler", "zsobol-4d", "--spp", "3", "--seed", "5", "--res", "24x16"]
+    theirs = cli_render(lowdisc_bin, tmp_path, *flags, "--net", "onetwo")
+    ours = lowdisc.render("cornell", sampler="zsobol-4d", net="onetwo", **SMALL)
+    assert np.array_equal(ours, theirs)
+    assert not np.array_equal(ours, lowdisc.render("cornell", sampler="zsobol-4d", **SMALL))
+
+
+def test_bad_nets_raise_value_error_with_the_reason(tmp_path):
+    def render(net, sampler="zsobol-4d"):
+        return lowdisc.render("cornell", sampler=sampler, net=net, spp=1, resolution=(4, 4))
+
+    good = lowdisc.sobol_matrices(4)
+    with pytest.raises(ValueError, match=r"shape \(dims, 32\).*got \(4, 31\)"):
+        render(good[:, :31])
+    with pytest.raises(ValueError, match=r"shape \(dims, 32\).*got \(128,\)"):
+        render(good.ravel())
+    with pytest.raises(ValueError, match=r"shape \(dims, 32\).*got \(1, 4, 32\)"):
+        render(good[None])
+    with pytest.raises(ValueError, match="1 to 65536 dimensions, got 0"):
+        render(good[:0])
+    with pytest.raises(ValueError, match="got dtype float64"):
+        render(good.astype(np.float64))
+    with pytest.raises(ValueError, match="got dtype bool"):
+        render(good > 0)
+    with pytest.raises(ValueError, match=r"in \[0, 2\*\*32\)"):
+        render(-good.astype(np.int64))
+    with pytest.raises(ValueError, match=r"in \[0, 2\*\*32\)"):
+        render(good.astype(np.int64) << 1)
+    singular = good.copy()
+    singular[3, 9] = singular[3, 2]
+    with pytest.raises(ValueError, match=r"^net array: dimension 3 is not a \(0,1\)-sequence"):
+        render(singular)
+    zero = good.copy()
+    zero[1] = 0
+    with pytest.raises(ValueError, match="dimension 1 is not a \\(0,1\\)-sequence"):
+        render(zero)
+    with pytest.raises(ValueError, match="3 dimensions; a sampler padded by 4-D groups needs"):
+        render(good[:3])
+    with pytest.raises(ValueError, match="does not take generator matrices"):
+        render("onetwo", sampler="halton")
+    with pytest.raises(ValueError, match="does not take generator matrices"):
+        render(good, sampler="pmj02bn")
+    with pytest.raises(ValueError, match="is not a built-in net .*nor a readable file"):
+        render(tmp_path / "missing.txt")
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0x80000000 0x40000000\n")
+    with pytest.raises(ValueError, match="bad.txt:1: 2 columns; a dimension has 32"):
+        render(bad)
+
+
 def test_image_errors_are_the_analytic_values():
     ref = np.full((3, 4, 3), 0.5, dtype=np.float32)
     e = lowdisc.errors(ref + 0.25, ref)

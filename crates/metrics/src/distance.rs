@@ -10,6 +10,12 @@
 //! seen. Exact for any input (duplicates give 0). Cost: O(n log n)-like, in practice
 //! O(n · 3^d) for evenly spread sets; degrades towards O(n²) for strongly clustered sets
 //! or high dimension (where `g` is 1 or 2). Points are processed in parallel (rayon).
+//!
+//! The `_cancellable` variants take a flag another thread sets to stop them: every
+//! point's search checks it before each cell it visits, so a cancelled computation
+//! stops within one cell per thread (its values discarded).
+
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -87,8 +93,14 @@ fn build_grid(points: &PointSet) -> Grid {
     Grid { g, start, members }
 }
 
-/// Distance from point `i` to its nearest other point.
-fn nearest(points: &PointSet, grid: &Grid, metric: DistanceMetric, i: usize) -> f64 {
+/// Distance from point `i` to its nearest other point (NaN once `cancel` is set).
+fn nearest(
+    points: &PointSet,
+    grid: &Grid,
+    metric: DistanceMetric,
+    i: usize,
+    cancel: &AtomicBool,
+) -> f64 {
     let d = points.dims();
     let g = grid.g as isize;
     let p = points.point(i);
@@ -98,9 +110,16 @@ fn nearest(points: &PointSet, grid: &Grid, metric: DistanceMetric, i: usize) -> 
     let mut offset = vec![0isize; d];
     let mut r = 0isize;
     loop {
+        if cancel.load(Ordering::Relaxed) {
+            return f64::NAN;
+        }
         // Visit every offset in [-r, r]^d whose Chebyshev norm is exactly r.
         offset.fill(-r);
         'cells: loop {
+            // In high dimension a ring has up to 3^d cells: check here too.
+            if cancel.load(Ordering::Relaxed) {
+                return f64::NAN;
+            }
             if offset.iter().any(|o| o.abs() == r) {
                 let mut lin = 0usize;
                 let mut inside = true;
@@ -144,6 +163,30 @@ fn nearest(points: &PointSet, grid: &Grid, metric: DistanceMetric, i: usize) -> 
 ///
 /// Errors with [`MetricsError::TooFewPoints`] for a single point.
 pub fn nearest_neighbour_distances(points: &PointSet, metric: DistanceMetric) -> Result<Vec<f64>> {
+    let never = AtomicBool::new(false);
+    Ok(nearest_neighbour_distances_cancellable(points, metric, &never)?.unwrap_or_default())
+}
+
+/// [`nearest_neighbour_distances`] that another thread can stop: `Ok(None)` if
+/// `cancel` was set before it finished; otherwise exactly its result.
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use lowdisc_metrics::{DistanceMetric, PointSet, nearest_neighbour_distances_cancellable};
+///
+/// let points = PointSet::from_slice(2, &[0.1, 0.1, 0.1, 0.6, 0.9, 0.6]).unwrap();
+/// let go = AtomicBool::new(false);
+/// let nn = nearest_neighbour_distances_cancellable(&points, DistanceMetric::Euclidean, &go);
+/// assert_eq!(nn.unwrap().unwrap().len(), 3);
+/// let stop = AtomicBool::new(true);
+/// let nn = nearest_neighbour_distances_cancellable(&points, DistanceMetric::Euclidean, &stop);
+/// assert_eq!(nn.unwrap(), None);
+/// ```
+pub fn nearest_neighbour_distances_cancellable(
+    points: &PointSet,
+    metric: DistanceMetric,
+    cancel: &AtomicBool,
+) -> Result<Option<Vec<f64>>> {
     if points.len() < 2 {
         return Err(MetricsError::TooFewPoints {
             needed: 2,
@@ -151,10 +194,11 @@ pub fn nearest_neighbour_distances(points: &PointSet, metric: DistanceMetric) ->
         });
     }
     let grid = build_grid(points);
-    Ok((0..points.len())
+    let distances = (0..points.len())
         .into_par_iter()
-        .map(|i| nearest(points, &grid, metric, i))
-        .collect())
+        .map(|i| nearest(points, &grid, metric, i, cancel))
+        .collect();
+    Ok((!cancel.load(Ordering::Relaxed)).then_some(distances))
 }
 
 /// Minimum pairwise distance and mean nearest-neighbour distance.
@@ -162,14 +206,40 @@ pub fn nearest_neighbour_distances(points: &PointSet, metric: DistanceMetric) ->
 /// Errors with [`MetricsError::TooFewPoints`] for a single point.
 pub fn distance_stats(points: &PointSet, metric: DistanceMetric) -> Result<DistanceStats> {
     let nn = nearest_neighbour_distances(points, metric)?;
-    Ok(DistanceStats {
+    Ok(stats(metric, &nn))
+}
+
+/// [`distance_stats`] that another thread can stop: `Ok(None)` if `cancel` was set
+/// before it finished; otherwise exactly its result.
+pub fn distance_stats_cancellable(
+    points: &PointSet,
+    metric: DistanceMetric,
+    cancel: &AtomicBool,
+) -> Result<Option<DistanceStats>> {
+    let nn = nearest_neighbour_distances_cancellable(points, metric, cancel)?;
+    Ok(nn.map(|nn| stats(metric, &nn)))
+}
+
+/// The statistics of the nearest-neighbour distances `nn`.
+fn stats(metric: DistanceMetric, nn: &[f64]) -> DistanceStats {
+    DistanceStats {
         metric,
         min_distance: nn.iter().copied().fold(f64::INFINITY, f64::min),
         mean_nn_distance: nn.iter().sum::<f64>() / nn.len() as f64,
-    })
+    }
 }
 
 /// Minimum pairwise distance (0 when two points coincide).
 pub fn min_distance(points: &PointSet, metric: DistanceMetric) -> Result<f64> {
     Ok(distance_stats(points, metric)?.min_distance)
+}
+
+/// [`min_distance`] that another thread can stop: `Ok(None)` if `cancel` was set
+/// before it finished; otherwise exactly its result.
+pub fn min_distance_cancellable(
+    points: &PointSet,
+    metric: DistanceMetric,
+    cancel: &AtomicBool,
+) -> Result<Option<f64>> {
+    Ok(distance_stats_cancellable(points, metric, cancel)?.map(|s| s.min_distance))
 }

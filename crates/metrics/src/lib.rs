@@ -29,7 +29,8 @@ pub mod star;
 pub mod structure;
 
 pub use distance::{
-    DistanceMetric, DistanceStats, distance_stats, min_distance, nearest_neighbour_distances,
+    DistanceMetric, DistanceStats, distance_stats, distance_stats_cancellable, min_distance,
+    min_distance_cancellable, nearest_neighbour_distances, nearest_neighbour_distances_cancellable,
 };
 pub use error::{MetricsError, Result};
 pub use l2::{
@@ -37,10 +38,11 @@ pub use l2::{
     l2_discrepancy_iterative,
 };
 pub use points::PointSet;
-pub use spectrum::{RadialSpectrum, radial_power_spectrum};
+pub use spectrum::{RadialSpectrum, radial_power_spectrum, radial_power_spectrum_cancellable};
 pub use star::{
     BoundsOptions, ExactOptions, MAX_EXACT_DIMS, StarBounds, estimated_work, grid_upper_bound,
-    random_box_lower_bound, star_bounds, star_discrepancy, star_discrepancy_1d,
-    star_discrepancy_cancellable, star_discrepancy_with, threshold_accepting_lower_bound,
+    random_box_lower_bound, star_bounds, star_bounds_cancellable, star_discrepancy,
+    star_discrepancy_1d, star_discrepancy_cancellable, star_discrepancy_with,
+    threshold_accepting_lower_bound,
 };
 pub use structure::{NyquistPower, SpectralPeak, nyquist_power, spectral_peak};

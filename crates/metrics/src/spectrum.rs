@@ -13,6 +13,11 @@
 //! `sin/cos` of the first step (re-anchored every 32 steps to bound drift), and each
 //! frequency costs one complex product per point. `P(−k) = P(k)` halves the work.
 //! Cost O(n K²) multiplications, parallel over `k_x` (rayon); memory O(n K).
+//!
+//! [`radial_power_spectrum_cancellable`] checks a cancel flag before every frequency
+//! (one pass over the points), so another thread can stop it within one pass per thread.
+
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -54,6 +59,30 @@ fn phases(x: f64, kmax: usize) -> Vec<(f64, f64)> {
 /// Errors: [`MetricsError::WrongDims`] unless the set is 2-D,
 /// [`MetricsError::InvalidOption`] when `max_frequency` is 0 or above 4096.
 pub fn radial_power_spectrum(points: &PointSet, max_frequency: usize) -> Result<RadialSpectrum> {
+    let never = AtomicBool::new(false);
+    let spectrum = radial_power_spectrum_cancellable(points, max_frequency, &never)?;
+    Ok(spectrum.expect("never cancelled"))
+}
+
+/// [`radial_power_spectrum`] that another thread can stop: `Ok(None)` if `cancel` was
+/// set before it finished; otherwise exactly its result.
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use lowdisc_metrics::{PointSet, radial_power_spectrum, radial_power_spectrum_cancellable};
+///
+/// let points = PointSet::from_slice(2, &[0.25, 0.75, 0.75, 0.25]).unwrap();
+/// let go = AtomicBool::new(false);
+/// let s = radial_power_spectrum_cancellable(&points, 8, &go).unwrap();
+/// assert_eq!(s, Some(radial_power_spectrum(&points, 8).unwrap()));
+/// let stop = AtomicBool::new(true);
+/// assert_eq!(radial_power_spectrum_cancellable(&points, 8, &stop).unwrap(), None);
+/// ```
+pub fn radial_power_spectrum_cancellable(
+    points: &PointSet,
+    max_frequency: usize,
+    cancel: &AtomicBool,
+) -> Result<Option<RadialSpectrum>> {
     if points.dims() != 2 {
         return Err(MetricsError::WrongDims {
             expected: 2,
@@ -79,7 +108,7 @@ pub fn radial_power_spectrum(points: &PointSet, max_frequency: usize) -> Result<
             for ky in ky_lo..=kmax as isize {
                 let radius = ((kx * kx) as f64 + (ky * ky) as f64).sqrt();
                 let ring = (radius + 0.5).floor() as usize;
-                if ring == 0 || ring > kmax {
+                if ring == 0 || ring > kmax || cancel.load(Ordering::Relaxed) {
                     continue;
                 }
                 let (mut re, mut im) = (0.0, 0.0);
@@ -107,13 +136,16 @@ pub fn radial_power_spectrum(points: &PointSet, max_frequency: usize) -> Result<
             }
             a
         });
+    if cancel.load(Ordering::Relaxed) {
+        return Ok(None);
+    }
     let (sum, cnt) = rings;
-    Ok(RadialSpectrum {
+    Ok(Some(RadialSpectrum {
         radii: (1..=kmax).map(|r| r as f64).collect(),
         power: (1..=kmax).map(|r| sum[r] / cnt[r].max(1) as f64).collect(),
         counts: cnt[1..].to_vec(),
         points: n,
-    })
+    }))
 }
 
 #[cfg(test)]

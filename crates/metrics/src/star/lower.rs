@@ -17,6 +17,13 @@
 //!
 //! All randomness comes from SplitMix64 seeded by the caller: equal seeds give equal
 //! results, whatever the thread count.
+//!
+//! The crate's cancellable bounds ([`super::star_bounds_cancellable`]) pass a cancel
+//! flag: once it is set, a random box or a threshold-accepting move is skipped (each
+//! costs one pass over the points), so a cancelled search stops within one pass per
+//! thread and its value is discarded.
+
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
@@ -125,9 +132,20 @@ fn local_discrepancy(points: &PointSet, y: &[f64], s: &mut Scratch) -> f64 {
 /// The paper's lower bound: the largest local discrepancy over `boxes` random anchored
 /// boxes (corners uniform in `[0,1]^d`, from `seed`). Returns 0 when `boxes == 0`.
 pub fn random_box_lower_bound(points: &PointSet, boxes: usize, seed: u64) -> f64 {
+    let never = AtomicBool::new(false);
+    random_boxes(points, boxes, seed, &never).unwrap_or(0.0)
+}
+
+/// [`random_box_lower_bound`], or `None` once `cancel` is set.
+pub(crate) fn random_boxes(
+    points: &PointSet,
+    boxes: usize,
+    seed: u64,
+    cancel: &AtomicBool,
+) -> Option<f64> {
     const CHUNK: usize = 256;
     let d = points.dims();
-    (0..boxes.div_ceil(CHUNK))
+    let best = (0..boxes.div_ceil(CHUNK))
         .into_par_iter()
         .map(|c| {
             let mut rng = SplitMix64::new(seed ^ (c as u64).wrapping_mul(0xD6E8_FEB8_6659_FD93));
@@ -137,11 +155,15 @@ pub fn random_box_lower_bound(points: &PointSet, boxes: usize, seed: u64) -> f64
             (0..count)
                 .map(|_| {
                     y.iter_mut().for_each(|v| *v = rng.next_f64());
+                    if cancel.load(Ordering::Relaxed) {
+                        return 0.0;
+                    }
                     local_discrepancy(points, &y, &mut snap)
                 })
                 .fold(0.0, f64::max)
         })
-        .reduce(|| 0.0, f64::max)
+        .reduce(|| 0.0, f64::max);
+    (!cancel.load(Ordering::Relaxed)).then_some(best)
 }
 
 /// Threshold-accepting search over critical boxes: `restarts` independent runs of
@@ -153,6 +175,18 @@ pub fn threshold_accepting_lower_bound(
     restarts: usize,
     seed: u64,
 ) -> f64 {
+    let never = AtomicBool::new(false);
+    threshold_accepting(points, iterations, restarts, seed, &never).unwrap_or(0.0)
+}
+
+/// [`threshold_accepting_lower_bound`], or `None` once `cancel` is set.
+pub(crate) fn threshold_accepting(
+    points: &PointSet,
+    iterations: usize,
+    restarts: usize,
+    seed: u64,
+    cancel: &AtomicBool,
+) -> Option<f64> {
     let d = points.dims();
     let grids: Vec<Vec<f64>> = (0..d)
         .map(|j| {
@@ -164,20 +198,29 @@ pub fn threshold_accepting_lower_bound(
         })
         .collect();
     if iterations == 0 {
-        return 0.0;
+        return Some(0.0);
     }
-    (0..restarts)
+    let best = (0..restarts)
         .into_par_iter()
         .map(|r| {
             let mut rng = SplitMix64::new(
                 seed.wrapping_add((r as u64 + 1).wrapping_mul(0x2545_F491_4F6C_DD1D)),
             );
-            ta_run(points, &grids, iterations, &mut rng)
+            ta_run(points, &grids, iterations, &mut rng, cancel)
         })
-        .reduce(|| 0.0, f64::max)
+        .reduce(|| 0.0, f64::max);
+    (!cancel.load(Ordering::Relaxed)).then_some(best)
 }
 
-fn ta_run(points: &PointSet, grids: &[Vec<f64>], iterations: usize, rng: &mut SplitMix64) -> f64 {
+/// One threshold-accepting run; it stops early (its value then meaningless)
+/// once `cancel` is set.
+fn ta_run(
+    points: &PointSet,
+    grids: &[Vec<f64>],
+    iterations: usize,
+    rng: &mut SplitMix64,
+    cancel: &AtomicBool,
+) -> f64 {
     let d = grids.len();
     let mut snap = Scratch::new(d);
     let corner =
@@ -205,6 +248,9 @@ fn ta_run(points: &PointSet, grids: &[Vec<f64>], iterations: usize, rng: &mut Sp
     let mut total = 0.0;
     const PROBES: usize = 32;
     for _ in 0..PROBES {
+        if cancel.load(Ordering::Relaxed) {
+            return 0.0;
+        }
         let a = random_idx(rng);
         let b = neighbour(rng, &a, 1.0);
         let va = local_discrepancy(points, &corner(&a), &mut snap);
@@ -216,6 +262,9 @@ fn ta_run(points: &PointSet, grids: &[Vec<f64>], iterations: usize, rng: &mut Sp
     let mut cur_val = local_discrepancy(points, &corner(&cur), &mut snap);
     let mut best = cur_val;
     for t in 0..iterations {
+        if cancel.load(Ordering::Relaxed) {
+            break;
+        }
         let frac = 1.0 - t as f64 / iterations as f64;
         let cand = neighbour(rng, &cur, frac);
         let val = local_discrepancy(points, &corner(&cand), &mut snap);

@@ -33,7 +33,9 @@ mod upper;
 
 pub use exact_nd::estimated_work;
 pub use lower::{random_box_lower_bound, threshold_accepting_lower_bound};
-pub use upper::{BoundsOptions, StarBounds, grid_upper_bound, star_bounds};
+pub use upper::{
+    BoundsOptions, StarBounds, grid_upper_bound, star_bounds, star_bounds_cancellable,
+};
 
 use std::sync::atomic::AtomicBool;
 

@@ -10,14 +10,23 @@
 //! The default `k` is the largest with `(k+1)^d ≤ 2^22` (e.g. 2047 in 2-D, 7 in 8-D):
 //! tight in low dimension, weak but valid in high dimension; above 22 dimensions
 //! [`star_bounds`] falls back to the trivial bound 1.
+//!
+//! [`star_bounds_cancellable`] is [`star_bounds`] that another thread can stop: the
+//! searches check the flag before every box or move, the grid between prefix-sum passes
+//! and every [`CANCEL_CHECK`] corners.
+
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use serde::Serialize;
 
-use super::lower::{random_box_lower_bound, threshold_accepting_lower_bound};
+use super::lower::{random_boxes, threshold_accepting};
 use crate::{MetricsError, PointSet, Result};
 
 /// Largest number of grid corners the default upper bound allocates.
 const DEFAULT_CORNERS: f64 = (1u64 << 22) as f64;
+
+/// How many grid corners the upper bound visits between checks of its cancel flag.
+const CANCEL_CHECK: usize = 1 << 16;
 
 /// Lower and upper bounds of `D*_N`, each with the method that produced it.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -81,6 +90,17 @@ fn first_corner(x: f64, k: usize, pred: impl Fn(f64) -> bool) -> usize {
 /// Grid-bracketing upper bound with `k` cells per axis (`None`: default). Errors with
 /// [`MetricsError::InvalidOption`] when `k == 0` or `(k+1)^d` exceeds 2^28 corners.
 pub fn grid_upper_bound(points: &PointSet, k: Option<usize>) -> Result<(f64, usize)> {
+    let never = AtomicBool::new(false);
+    Ok(grid_bound(points, k, &never)?.unwrap_or((f64::NAN, 0)))
+}
+
+/// [`grid_upper_bound`], or `Ok(None)` once `cancel` is set.
+fn grid_bound(
+    points: &PointSet,
+    k: Option<usize>,
+    cancel: &AtomicBool,
+) -> Result<Option<(f64, usize)>> {
+    let cancelled = || cancel.load(Ordering::Relaxed);
     let d = points.dims();
     let k = k.unwrap_or_else(|| default_grid_cells(d));
     let side = k + 1;
@@ -111,6 +131,9 @@ pub fn grid_upper_bound(points: &PointSet, k: Option<usize>) -> Result<(f64, usi
     let mut stride = 1;
     for _ in 0..d {
         for arr in [&mut closed, &mut open] {
+            if cancelled() {
+                return Ok(None);
+            }
             for idx in 0..total {
                 if (idx / stride) % side != 0 {
                     arr[idx] += arr[idx - stride];
@@ -124,6 +147,9 @@ pub fn grid_upper_bound(points: &PointSet, k: Option<usize>) -> Result<(f64, usi
     let mut best = 0.0f64;
     let mut digits = vec![0usize; d];
     for (lo, &open_lo) in open.iter().enumerate() {
+        if lo % CANCEL_CHECK == 0 && cancelled() {
+            return Ok(None);
+        }
         let mut rest = lo;
         for dig in digits.iter_mut() {
             *dig = rest % side;
@@ -143,7 +169,7 @@ pub fn grid_upper_bound(points: &PointSet, k: Option<usize>) -> Result<(f64, usi
         let below = v_hi - f64::from(open_lo) * inv_n;
         best = best.max(above).max(below);
     }
-    Ok((best.min(1.0), k))
+    Ok(Some((best.min(1.0), k)))
 }
 
 /// Lower and upper bounds of the star discrepancy in any dimension.
@@ -151,13 +177,43 @@ pub fn grid_upper_bound(points: &PointSet, k: Option<usize>) -> Result<(f64, usi
 /// `lower` is the better of the paper's random boxes and threshold accepting;
 /// `upper` is the grid-bracketing bound. Errors only for an invalid grid option.
 pub fn star_bounds(points: &PointSet, options: &BoundsOptions) -> Result<StarBounds> {
-    let random = random_box_lower_bound(points, options.random_boxes, options.seed);
-    let ta = threshold_accepting_lower_bound(
+    let never = AtomicBool::new(false);
+    let bounds = star_bounds_cancellable(points, options, &never)?;
+    Ok(bounds.expect("never cancelled"))
+}
+
+/// [`star_bounds`] that another thread can stop: `Ok(None)` if `cancel` was set
+/// before it finished; otherwise exactly [`star_bounds`]' result.
+///
+/// ```
+/// use std::sync::atomic::AtomicBool;
+/// use lowdisc_metrics::{BoundsOptions, PointSet, star_bounds, star_bounds_cancellable};
+///
+/// let points = PointSet::from_slice(2, &[0.25, 0.75, 0.75, 0.25]).unwrap();
+/// let options = BoundsOptions::default();
+/// let go = AtomicBool::new(false);
+/// let bounds = star_bounds_cancellable(&points, &options, &go).unwrap();
+/// assert_eq!(bounds, Some(star_bounds(&points, &options).unwrap()));
+/// let stop = AtomicBool::new(true);
+/// assert_eq!(star_bounds_cancellable(&points, &options, &stop).unwrap(), None);
+/// ```
+pub fn star_bounds_cancellable(
+    points: &PointSet,
+    options: &BoundsOptions,
+    cancel: &AtomicBool,
+) -> Result<Option<StarBounds>> {
+    let Some(random) = random_boxes(points, options.random_boxes, options.seed, cancel) else {
+        return Ok(None);
+    };
+    let Some(ta) = threshold_accepting(
         points,
         options.ta_iterations,
         options.ta_restarts,
         options.seed,
-    );
+        cancel,
+    ) else {
+        return Ok(None);
+    };
     let d = points.dims();
     // Even k = 1 needs 2^d corners; beyond 2^22 only the trivial bound remains.
     let (upper, upper_method) = if options.grid_cells.is_none() && d > 22 {
@@ -166,7 +222,9 @@ pub fn star_bounds(points: &PointSet, options: &BoundsOptions) -> Result<StarBou
             format!("trivial (D* <= 1; a bracketing grid is too large in {d} dimensions)"),
         )
     } else {
-        let (u, k) = grid_upper_bound(points, options.grid_cells)?;
+        let Some((u, k)) = grid_bound(points, options.grid_cells, cancel)? else {
+            return Ok(None);
+        };
         (u, format!("grid bracketing ({k} cells per axis)"))
     };
     let (lower, lower_method) = if ta >= random {
@@ -186,10 +244,10 @@ pub fn star_bounds(points: &PointSet, options: &BoundsOptions) -> Result<StarBou
             ),
         )
     };
-    Ok(StarBounds {
+    Ok(Some(StarBounds {
         lower,
         upper,
         lower_method,
         upper_method,
-    })
+    }))
 }

@@ -1,5 +1,7 @@
 //! The metric functions of `lowdisc._lowdisc`: each takes a C-contiguous
-//! float64 array `(n, d)` and runs the engine with the GIL released.
+//! float64 array `(n, d)` and runs the engine with the GIL released; the
+//! long ones (discrepancies, star bounds, distances, spectrum) stop at
+//! Ctrl-C.
 
 use numpy::{PyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
@@ -58,7 +60,8 @@ fn star_work(n: usize, d: usize) -> f64 {
     metrics::star_work(n, d)
 }
 
-/// Lower and upper star-discrepancy bounds and their methods.
+/// Lower and upper star-discrepancy bounds and their methods; Ctrl-C stops
+/// them.
 #[pyfunction]
 #[pyo3(signature = (sample, random_boxes, ta_iterations, ta_restarts, grid_cells, seed))]
 fn star_bounds(
@@ -79,22 +82,21 @@ fn star_bounds(
         grid_cells,
         seed,
     };
-    let b = py
-        .detach(|| metrics::star_bounds(x, d, &request))
-        .map_err(engine_error)?;
+    let work = |cancel: &_| metrics::star_bounds(x, d, &request, cancel);
+    let b = interruptible(py, work, no_tick)?.map_err(engine_error)?;
     Ok((b.lower, b.upper, b.lower_method, b.upper_method))
 }
 
-/// The smallest distance between two points under `metric`.
+/// The smallest distance between two points under `metric`; Ctrl-C stops it.
 #[pyfunction]
 fn min_distance(py: Python<'_>, sample: &Bound<'_, PyAny>, metric: &str) -> PyResult<f64> {
     let (array, d) = self::sample(sample)?;
     let x = slice(&array)?;
-    py.detach(|| metrics::min_distance(x, d, metric))
-        .map_err(engine_error)
+    let work = |cancel: &_| metrics::min_distance(x, d, metric, cancel);
+    interruptible(py, work, no_tick)?.map_err(engine_error)
 }
 
-/// Each point's distance to its nearest other point.
+/// Each point's distance to its nearest other point; Ctrl-C stops it.
 #[pyfunction]
 fn nearest_neighbour_distances<'py>(
     py: Python<'py>,
@@ -103,9 +105,8 @@ fn nearest_neighbour_distances<'py>(
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let (array, d) = self::sample(sample)?;
     let x = slice(&array)?;
-    let v = py
-        .detach(|| metrics::nearest_neighbour_distances(x, d, metric))
-        .map_err(engine_error)?;
+    let work = |cancel: &_| metrics::nearest_neighbour_distances(x, d, metric, cancel);
+    let v = interruptible(py, work, no_tick)?.map_err(engine_error)?;
     Ok(PyArray1::from_vec(py, v))
 }
 
@@ -116,7 +117,7 @@ type Spectrum<'py> = (
     Bound<'py, PyArray1<u64>>,
 );
 
-/// The radial power spectrum: (radii, power, counts).
+/// The radial power spectrum: (radii, power, counts); Ctrl-C stops it.
 #[pyfunction]
 fn power_spectrum<'py>(
     py: Python<'py>,
@@ -125,9 +126,8 @@ fn power_spectrum<'py>(
 ) -> PyResult<Spectrum<'py>> {
     let (array, d) = self::sample(sample)?;
     let x = slice(&array)?;
-    let (radii, power, counts) = py
-        .detach(|| metrics::power_spectrum(x, d, max_frequency))
-        .map_err(engine_error)?;
+    let work = |cancel: &_| metrics::power_spectrum(x, d, max_frequency, cancel);
+    let (radii, power, counts) = interruptible(py, work, no_tick)?.map_err(engine_error)?;
     let counts = counts.into_iter().map(|c| c as u64).collect();
     Ok((
         PyArray1::from_vec(py, radii),

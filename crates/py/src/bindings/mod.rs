@@ -10,6 +10,7 @@ mod arrays;
 mod images;
 mod interrupt;
 mod metrics;
+mod nets;
 mod render;
 
 use numpy::{
@@ -72,8 +73,9 @@ fn points_into(
 }
 
 /// The renderer's samples for `pixels` (an `(p, 2)` uint32 array of x, y), as
-/// a float32 array `(p, spp, dims)`.
+/// a float32 array `(p, spp, dims)`; `net` as [`nets::net_arg`] takes it.
 #[pyfunction]
+#[pyo3(signature = (sampler, spp, resolution, pixels, dims, seed, net=None))]
 #[allow(clippy::too_many_arguments)]
 fn pixel_samples<'py>(
     py: Python<'py>,
@@ -83,7 +85,9 @@ fn pixel_samples<'py>(
     pixels: &Bound<'py, PyAny>,
     dims: u32,
     seed: u64,
+    net: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyArray3<f32>>> {
+    let net = nets::net_arg(net.as_ref())?.unwrap_or_default();
     let pixels: PyReadonlyArray2<u32> = arrays::contiguous_2d(pixels, "pixels")?;
     let shape = pixels.shape();
     if shape[1] != 2 {
@@ -103,6 +107,7 @@ fn pixel_samples<'py>(
         pixels: list,
         dims,
         seed,
+        net,
     };
     let values = py
         .detach(|| pixel::pixel_samples(&spec))

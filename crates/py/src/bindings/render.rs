@@ -12,17 +12,19 @@ use super::interrupt::interruptible;
 use crate::engine::render::{self as engine, RenderRequest};
 
 /// Renders `scene` (a built-in name or a pbrt-v4 file); `None` settings
-/// take the scene's value, else the default. Returns the `(height, width,
+/// take the scene's value, else the default; `net` as
+/// [`super::nets::net_arg`] takes it. Returns the `(height, width,
 /// 3)` float32 image and the warnings. `progress(done, total)` (samples) is
 /// called from this thread while the render runs.
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (scene, sampler, spp, seed, max_depth, resolution, threads, threshold,
+#[pyo3(signature = (scene, sampler, net, spp, seed, max_depth, resolution, threads, threshold,
                     paper_all_dims, spectral, approximate, progress))]
 fn render<'py>(
     py: Python<'py>,
     scene: String,
     sampler: Option<String>,
+    net: Option<Bound<'py, PyAny>>,
     spp: Option<u32>,
     seed: Option<u64>,
     max_depth: Option<u32>,
@@ -37,6 +39,7 @@ fn render<'py>(
     let request = RenderRequest {
         scene,
         sampler,
+        net: super::nets::net_arg(net.as_ref())?,
         spp,
         seed,
         max_depth,

@@ -100,8 +100,14 @@ pub struct BoundsRequest {
 }
 
 /// Lower and upper bounds of the star discrepancy (for sets too large for
-/// the exact value).
-pub fn star_bounds(coords: &[f64], d: usize, request: &BoundsRequest) -> Result<StarBounds> {
+/// the exact value). Setting `cancel` from another thread stops them (the
+/// error says so).
+pub fn star_bounds(
+    coords: &[f64],
+    d: usize,
+    request: &BoundsRequest,
+    cancel: &AtomicBool,
+) -> Result<StarBounds> {
     let points = point_set(coords, d)?;
     let default = BoundsOptions::default();
     if request.grid_cells == Some(0) {
@@ -114,7 +120,8 @@ pub fn star_bounds(coords: &[f64], d: usize, request: &BoundsRequest) -> Result<
         grid_cells: request.grid_cells.or(default.grid_cells),
         seed: request.seed,
     };
-    let b = lowdisc_metrics::star_bounds(&points, &options)?;
+    let b = lowdisc_metrics::star_bounds_cancellable(&points, &options, cancel)?
+        .ok_or_else(|| cancelled("the star-discrepancy bounds"))?;
     Ok(StarBounds {
         lower: b.lower,
         upper: b.upper,
@@ -135,31 +142,46 @@ fn distance_metric(name: &str) -> Result<DistanceMetric> {
 }
 
 /// Each point's distance to its nearest other point (input order).
-pub fn nearest_neighbour_distances(coords: &[f64], d: usize, metric: &str) -> Result<Vec<f64>> {
+/// Setting `cancel` from another thread stops it (the error says so).
+pub fn nearest_neighbour_distances(
+    coords: &[f64],
+    d: usize,
+    metric: &str,
+    cancel: &AtomicBool,
+) -> Result<Vec<f64>> {
     let metric = distance_metric(metric)?;
     let points = point_set(coords, d)?;
-    Ok(lowdisc_metrics::nearest_neighbour_distances(
-        &points, metric,
-    )?)
+    lowdisc_metrics::nearest_neighbour_distances_cancellable(&points, metric, cancel)?
+        .ok_or_else(|| cancelled("the nearest-neighbour distances"))
 }
 
-/// The smallest distance between two points (0 with duplicates).
-pub fn min_distance(coords: &[f64], d: usize, metric: &str) -> Result<f64> {
+/// The smallest distance between two points (0 with duplicates). Setting
+/// `cancel` from another thread stops it (the error says so).
+pub fn min_distance(coords: &[f64], d: usize, metric: &str, cancel: &AtomicBool) -> Result<f64> {
     let metric = distance_metric(metric)?;
     let points = point_set(coords, d)?;
-    Ok(lowdisc_metrics::min_distance(&points, metric)?)
+    lowdisc_metrics::min_distance_cancellable(&points, metric, cancel)?
+        .ok_or_else(|| cancelled("the minimum distance"))
 }
 
 /// The radially averaged power spectrum of 2-D points: ring radii, mean
-/// periodogram per ring, frequencies per ring.
+/// periodogram per ring, frequencies per ring. Setting `cancel` from
+/// another thread stops it (the error says so).
 pub fn power_spectrum(
     coords: &[f64],
     d: usize,
     max_frequency: usize,
+    cancel: &AtomicBool,
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<usize>)> {
     let points = point_set(coords, d)?;
-    let s = lowdisc_metrics::radial_power_spectrum(&points, max_frequency)?;
+    let s = lowdisc_metrics::radial_power_spectrum_cancellable(&points, max_frequency, cancel)?
+        .ok_or_else(|| cancelled("the power spectrum"))?;
     Ok((s.radii, s.power, s.counts))
+}
+
+/// The error of a computation stopped by its cancel flag.
+fn cancelled(what: &str) -> EngineError {
+    EngineError::value(format!("{what} was cancelled"))
 }
 
 #[cfg(test)]
@@ -178,7 +200,7 @@ mod tests {
         // One point at x: D* = max(x, 1 - x) in 1-D.
         let go = AtomicBool::new(false);
         assert_eq!(star_discrepancy(&[0.25], 1, 1e9, &go).unwrap(), 0.75);
-        let b = star_bounds(&grid(), 2, &BoundsRequest::default()).unwrap();
+        let b = star_bounds(&grid(), 2, &BoundsRequest::default(), &go).unwrap();
         let exact = star_discrepancy(&grid(), 2, 1e9, &go).unwrap();
         // A set flag stops it.
         let stop = AtomicBool::new(true);
@@ -201,11 +223,31 @@ mod tests {
 
     #[test]
     fn distances_of_a_grid_are_its_spacing() {
-        assert!((min_distance(&grid(), 2, "euclidean").unwrap() - 0.25).abs() < 1e-15);
-        assert!((min_distance(&grid(), 2, "toroidal").unwrap() - 0.25).abs() < 1e-15);
+        let go = AtomicBool::new(false);
+        assert!((min_distance(&grid(), 2, "euclidean", &go).unwrap() - 0.25).abs() < 1e-15);
+        assert!((min_distance(&grid(), 2, "toroidal", &go).unwrap() - 0.25).abs() < 1e-15);
         // Toroidal distance wraps: 0.05 and 0.95 are 0.1 apart.
         let pair = [0.05, 0.5, 0.95, 0.5];
-        assert!((min_distance(&pair, 2, "toroidal").unwrap() - 0.1).abs() < 1e-15);
+        assert!((min_distance(&pair, 2, "toroidal", &go).unwrap() - 0.1).abs() < 1e-15);
+        let nn = nearest_neighbour_distances(&grid(), 2, "euclidean", &go).unwrap();
+        assert_eq!(nn.len(), 16);
+    }
+
+    #[test]
+    fn a_set_flag_stops_the_bounds_the_distances_and_the_spectrum() {
+        let stop = AtomicBool::new(true);
+        let x = grid();
+        let bounds = star_bounds(&x, 2, &BoundsRequest::default(), &stop).unwrap_err();
+        assert!(bounds.to_string().contains("cancelled"), "{bounds}");
+        let min = min_distance(&x, 2, "euclidean", &stop).unwrap_err();
+        assert!(min.to_string().contains("cancelled"), "{min}");
+        let nn = nearest_neighbour_distances(&x, 2, "toroidal", &stop).unwrap_err();
+        assert!(nn.to_string().contains("cancelled"), "{nn}");
+        let spectrum = power_spectrum(&x, 2, 8, &stop).unwrap_err();
+        assert!(spectrum.to_string().contains("cancelled"), "{spectrum}");
+        let go = AtomicBool::new(false);
+        let (radii, power, counts) = power_spectrum(&x, 2, 8, &go).unwrap();
+        assert_eq!((radii.len(), power.len(), counts.len()), (8, 8, 8));
     }
 
     #[test]
@@ -216,7 +258,7 @@ mod tests {
         assert!(err(discrepancy(&[0.5], 1, "XD", false, &go)).contains("is not a valid method"));
         let stop = AtomicBool::new(true);
         assert!(err(discrepancy(&grid(), 2, "CD", false, &stop)).contains("cancelled"));
-        assert!(err(min_distance(&grid(), 2, "cosine")).contains("'euclidean' or 'toroidal'"));
+        assert!(err(min_distance(&grid(), 2, "cosine", &go)).contains("'euclidean' or 'toroidal'"));
         assert!(err(star_discrepancy(&grid(), 2, 1.0, &go)).contains("star_bounds"));
     }
 }

@@ -6,6 +6,8 @@
 //!   words or floats, from any start index, in parallel chunks, written into
 //!   an array the caller provides; [`sobol_fill`] is the Sobol part.
 //! * [`pixel`]: the renderer's pixel samplers, by catalog name.
+//! * [`nets`]: the generator matrices (`net=`) of the Sobol samplers: a
+//!   built-in name, a file or matrices in memory.
 //! * [`metrics`]: discrepancies, distances and spectra of point arrays.
 //! * [`render`]: the path tracer's images, as `lowdisc render` makes them.
 //! * [`images`]: error metrics of images against a reference and the
@@ -16,6 +18,7 @@
 
 pub mod images;
 pub mod metrics;
+pub mod nets;
 pub mod pixel;
 pub mod points;
 pub mod render;

@@ -13,6 +13,7 @@
 use core::str::FromStr;
 
 use lowdisc::catalog::{MAX_POINT_WORDS, SamplerConfig, SamplerName};
+use lowdisc::net::Net;
 use lowdisc_tiles::{pixel_draws, pixel_rows};
 use rayon::prelude::*;
 
@@ -44,6 +45,9 @@ pub struct PixelSpec {
     pub dims: u32,
     /// Seed of every random choice.
     pub seed: u64,
+    /// The generator matrices of the Sobol samplers ([`Net::SOBOL`]: the
+    /// built-in ones); a sampler that reads none refuses any other.
+    pub net: Net,
 }
 
 /// The sampler called `name`; an unknown name is an error listing them all.
@@ -63,6 +67,7 @@ pub fn pixel_samples(spec: &PixelSpec) -> Result<Vec<f32>> {
     config.seed = spec.seed;
     config.spp = spec.spp;
     config.resolution = spec.resolution;
+    config.net = spec.net;
     let sampler = config.build()?;
     if spec.dims < 2 || spec.dims - 2 > MAX_EXTRA_DIMS {
         return Err(EngineError::value(format!(
@@ -131,6 +136,7 @@ mod tests {
             pixels,
             dims,
             seed: 5,
+            net: Net::SOBOL,
         }
     }
 
@@ -196,5 +202,22 @@ mod tests {
         let mut zero = spec("halton", vec![], 2);
         zero.spp = 0;
         assert!(err(zero).contains("at least one sample per pixel"));
+        let mut halton = spec("halton", vec![], 2);
+        halton.net = Net::named("onetwo").unwrap();
+        assert!(err(halton).contains("does not take generator matrices"));
+    }
+
+    #[test]
+    fn a_net_changes_the_samplers_that_read_it_only_as_its_matrices_do() {
+        use crate::engine::nets::{NetSource, resolve};
+        let mut with = spec("zsobol-4d", vec![[1, 2]], 6);
+        let plain = pixel_samples(&with).unwrap();
+        with.net = resolve(&NetSource::Matrices(
+            lowdisc::sobol::matrices()[..4].to_vec(),
+        ))
+        .unwrap();
+        assert_eq!(pixel_samples(&with).unwrap(), plain);
+        with.net = Net::named("onetwo").unwrap();
+        assert_ne!(pixel_samples(&with).unwrap(), plain);
     }
 }

@@ -160,6 +160,7 @@ fn results_do_not_depend_on_the_thread_count() {
                 pixels: (0..4096).map(|k| [k % 64, k / 64]).collect(),
                 dims: 6,
                 seed: 2,
+                net: lowdisc::net::Net::SOBOL,
             };
             (words(&s), super::super::pixel::pixel_samples(&p).unwrap())
         })

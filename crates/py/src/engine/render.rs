@@ -13,6 +13,7 @@ use std::collections::HashSet;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 
+use lowdisc::net::Net;
 use lowdisc_render::cornell::{CORNELL_RESOLUTION, cornell_scene};
 use lowdisc_render::pbrt::{LoadOptions, load_pbrt_scene};
 use lowdisc_render::preset::ScenePreset;
@@ -42,6 +43,9 @@ pub struct RenderRequest {
     pub scene: String,
     /// The pixel sampler's catalog name.
     pub sampler: Option<String>,
+    /// The generator matrices of the Sobol samplers (`--net`); `None`
+    /// keeps the built-in Sobol matrices.
+    pub net: Option<Net>,
     /// Samples per pixel.
     pub spp: Option<u32>,
     /// Seed of every random choice.
@@ -108,6 +112,7 @@ fn flags_layer(r: &RenderRequest) -> Result<SettingsLayer> {
             r.sampler.as_deref().map(sampler_name).transpose()?,
             "sampler",
         ),
+        net: Given::maybe(r.net, "net"),
         spp: Given::maybe(r.spp, "spp"),
         seed: Given::maybe(r.seed, "seed"),
         threshold: Given::maybe(r.threshold, "threshold"),
@@ -194,6 +199,37 @@ mod tests {
         let direct = render(&request("direct"), &quiet, &go).unwrap();
         assert_eq!(direct.pixels.len(), a.pixels.len());
         assert_ne!(direct.pixels, a.pixels);
+    }
+
+    #[test]
+    fn a_net_reaches_the_sampler_and_a_sampler_without_one_refuses_it() {
+        use crate::engine::nets::{NetSource, resolve};
+        let go = AtomicBool::new(false);
+        let base = RenderRequest {
+            sampler: Some("zsobol-4d".into()),
+            ..request("cornell")
+        };
+        let plain = render(&base, &quiet, &go).unwrap();
+        let sobol = lowdisc::sobol::matrices()[..4].to_vec();
+        let same = RenderRequest {
+            net: Some(resolve(&NetSource::Matrices(sobol)).unwrap()),
+            ..base.clone()
+        };
+        assert_eq!(render(&same, &quiet, &go).unwrap(), plain);
+        let onetwo = RenderRequest {
+            net: Net::named("onetwo"),
+            ..base.clone()
+        };
+        assert_ne!(render(&onetwo, &quiet, &go).unwrap().pixels, plain.pixels);
+        let halton = RenderRequest {
+            sampler: Some("halton".into()),
+            ..onetwo
+        };
+        let e = render(&halton, &quiet, &go).unwrap_err().to_string();
+        assert!(
+            e.contains("net: sampler `halton` does not take generator matrices"),
+            "{e}"
+        );
     }
 
     #[test]
