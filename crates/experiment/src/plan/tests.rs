@@ -280,6 +280,21 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
     finer.unit_samples = Some(1 << 21);
     // A row of tiles (2^23) in 4 ranges of 2^21.
     assert_eq!(reference_cut(&finer, Target::Convergence).ranges, 4);
+    let fine = Plan::new(finer.clone(), 0, [false, false]);
+    let last = fine
+        .units
+        .iter()
+        .filter(|u| u.work.describe().starts_with("reference conv"))
+        .last()
+        .unwrap();
+    assert_eq!(
+        last.work.describe(),
+        "reference convergence band 3 of 3 range 4 of 4"
+    );
+    assert_eq!(
+        last.options(&finer).unwrap().sample_range(),
+        SampleRange::new(6144, 8192)
+    );
     assert_ne!(key(&c), key(&finer));
     finer.unit_samples = Some((1 << 23) + 1);
     assert_eq!(key(&c), key(&finer));
