@@ -284,8 +284,7 @@ fn the_default_plan_cuts_what_exceeds_2_to_the_23_samples() {
     let last = fine
         .units
         .iter()
-        .filter(|u| u.work.describe().starts_with("reference conv"))
-        .last()
+        .rfind(|u| u.work.describe().starts_with("reference conv"))
         .unwrap();
     assert_eq!(
         last.work.describe(),
