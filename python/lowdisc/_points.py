@@ -288,8 +288,6 @@ def pixel_samples(sampler: str, spp: int, resolution: tuple[int, int],
         a file, or an integer array ``(dims, 32)`` of matrix columns, the
         layout of :func:`sobol_matrices`. A sampler that reads no net
         refuses any but ``"sobol"`` with ``ValueError``.
-    tile_size : int, default 16
-        The renderer's tile side.
 
     Returns
     -------
