@@ -2,7 +2,7 @@
 //! the loader's state; shapes, materials, lights and rendering options are
 //! handled in sibling modules.
 
-use super::media::MediaTable;
+use super::media_table::MediaTable;
 use super::state::{MatRef, StateStack, pbrt_matrix};
 use super::{LoadOptions, LoadedScene, SceneCounts, SceneSettings};
 use crate::bsdf::Material;

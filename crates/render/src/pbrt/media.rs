@@ -12,45 +12,6 @@ use super::loader::PbrtLoader;
 use crate::medium::{HomogeneousMedium, Medium, MediumInterface};
 use crate::spectrum::Rgb;
 use pbrt_format::{Loc, ParamSet, ParseError, TargetResult};
-use std::collections::HashMap;
-
-/// The media of a scene file by name.
-#[derive(Debug, Default)]
-pub(super) struct MediaTable {
-    /// Name to scene index.
-    index: HashMap<String, u32>,
-    /// By scene index: the medium (once defined), and where its name was
-    /// first mentioned.
-    slots: Vec<(Option<Medium>, String, Loc)>,
-}
-
-impl MediaTable {
-    /// The scene index of medium `name` (`None` for `""`, vacuum).
-    fn index(&mut self, name: &str, loc: &Loc) -> Option<u32> {
-        if name.is_empty() {
-            return None;
-        }
-        let next = self.slots.len() as u32;
-        let i = *self.index.entry(name.to_string()).or_insert(next);
-        if i == next {
-            self.slots.push((None, name.to_string(), loc.clone()));
-        }
-        Some(i)
-    }
-
-    /// Every medium in index order, or the error at the first use of a
-    /// medium that was never defined.
-    pub(super) fn into_media(self) -> Result<Vec<Medium>, ParseError> {
-        self.slots
-            .into_iter()
-            .map(|(m, name, loc)| {
-                m.ok_or_else(|| {
-                    ParseError::scene(&loc, format!("medium \"{name}\" is not defined"))
-                })
-            })
-            .collect()
-    }
-}
 
 /// Measured scattering coefficients `(name, σs', σa)` in mm⁻¹ (RGB), the
 /// values pbrt-v4's `"preset"` parameter names: Jensen et al. 2001, "A

@@ -43,6 +43,7 @@ mod lights;
 mod loader;
 mod materials;
 mod media;
+mod media_table;
 mod options;
 mod shapes;
 mod state;
