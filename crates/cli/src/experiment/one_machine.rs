@@ -129,8 +129,8 @@ pub struct ExperimentArgs {
     /// often ship without their map) [default: none].
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
-    /// Render a scene file's pbrt-v4 features that lowdisc lacks (media,
-    /// curves, bump maps, other integrators, ...) approximately, each with a
+    /// Render a scene file's pbrt-v4 features that lowdisc lacks (grid media,
+    /// curves, measured BSDFs, other integrators, ...) approximately, each with a
     /// warning, instead of refusing the scene.
     #[arg(long)]
     approximate: bool,

@@ -39,13 +39,15 @@ Box Data geometry, RGB reflectances, 35 mm camera). A pbrt-v4 scene file's\n\
 Sampler, pixelsamples, maxdepth, Film resolution and filename are used\n\
 unless --sampler, --spp, --maxdepth, --res or -o is given; --envmap replaces\n\
 the image of every image-based infinite light. A pbrt-v4 feature lowdisc\n\
-lacks and that changes the image (media, curves, bump maps, integrators\n\
-other than path, ...) is an error naming it with file:line:column;\n\
+lacks and that changes the image (grid media, curves and the hair\n\
+material, the measured material, bdpt, sppm and mlt, ...) is an error\n\
+naming it with file:line:column;\n\
 --approximate renders it approximately with a warning instead. Features\n\
 without effect on the pixels are warnings; syntax errors are errors.\n\
 \n\
 The renderer is a unidirectional path tracer with next-event estimation and\n\
-MIS, in RGB by default or spectrally as pbrt-v4 with --spectral. Every random\n\
+MIS (a volumetric one, as pbrt-v4's volpath, for scenes with homogeneous\n\
+media), in RGB by default or spectrally as pbrt-v4 with --spectral. Every random\n\
 decision comes from the chosen pixel sampler, in a fixed order of dimensions\n\
 (with --spectral the wavelengths first; film position, lens, then seven per\n\
 bounce: light choice, light position, BSDF lobe, BSDF direction, Russian\n\
@@ -100,8 +102,8 @@ pub struct RenderArgs {
     /// Environment map replacing a scene's missing one (scene files only).
     #[arg(long, value_name = "FILE")]
     envmap: Option<PathBuf>,
-    /// Render the scene file's pbrt-v4 features that lowdisc lacks (media,
-    /// curves, bump maps, other integrators, ...) approximately, each with a
+    /// Render the scene file's pbrt-v4 features that lowdisc lacks (grid media,
+    /// curves, measured BSDFs, other integrators, ...) approximately, each with a
     /// warning saying how, instead of refusing the scene.
     #[arg(long)]
     approximate: bool,

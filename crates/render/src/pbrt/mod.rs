@@ -11,7 +11,7 @@
 //!
 //! **No silent substitutions.** A pbrt-v4 feature that lowdisc lacks and
 //! that changes the image (a `curve` shape, the `hair` or `measured`
-//! material, bump or normal maps, alpha cut-outs, grid media (`uniformgrid`,
+//! material, alpha on an area light, grid media (`uniformgrid`,
 //! `rgbgrid`, `cloud`, `nanovdb`), the `bdpt`, `sppm`, `mlt`, ... integrators, a
 //! non-sRGB colour space, ...) is an error naming the feature and its
 //! `file:line:column`, unless [`LoadOptions::approximate`] is set: then it
