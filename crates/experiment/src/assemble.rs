@@ -16,7 +16,7 @@ use crate::comparison::fill_statistics;
 use crate::config::ExperimentConfig;
 use crate::cut::samples;
 use crate::metrics::{ErrorStats, MetricSummary, measure};
-use crate::plan::{Plan, Target, Work, convergence_cut, shares_reference};
+use crate::plan::{Plan, Target, Work, convergence_cut, convergence_spps, shares_reference};
 use crate::progress::{Progress, Stage};
 use crate::reference::reference;
 use crate::report::answer::Answer;
@@ -169,7 +169,7 @@ pub fn assemble(
     };
     // Spp 1, 2, 4, .. conv_max: 2 conv_max - 1 samples per pixel in all,
     // for each seed.
-    let spps: Vec<u32> = (0..=config.conv_max.ilog2()).map(|k| 1 << k).collect();
+    let spps: Vec<u32> = convergence_spps(config).collect();
     let per_series = samples(config.conv_res, 2 * config.conv_max - 1);
     let seeds = u64::from(config.conv_seeds);
     let view = measures.view_at(config.conv_res)?;

@@ -219,6 +219,11 @@ pub fn reference_cut(config: &ExperimentConfig, target: Target) -> Cut {
     cut(resolution, spp, config.unit_budget(), true)
 }
 
+/// The samples per pixel of a convergence series: 1, 2, 4, .. `conv_max`.
+pub fn convergence_spps(config: &ExperimentConfig) -> impl Iterator<Item = u32> {
+    (0..=config.conv_max.ilog2()).map(|k| 1 << k)
+}
+
 /// The cut of the convergence point at `spp` ([`crate::cut::cut`] at the
 /// unit budget, in bands only: its image is the whole render's bit for bit).
 pub fn convergence_cut(config: &ExperimentConfig, spp: u32) -> Cut {
@@ -260,8 +265,7 @@ pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
     }
     for &sampler in &config.samplers {
         for seed in 0..u64::from(config.conv_seeds) {
-            let mut spp = 1;
-            while spp <= config.conv_max {
+            for spp in convergence_spps(config) {
                 for piece in convergence_cut(config, spp).pieces() {
                     work.push(Work::Convergence {
                         sampler,
@@ -270,7 +274,6 @@ pub fn units(config: &ExperimentConfig, cached: [bool; 2]) -> Vec<Unit> {
                         piece,
                     });
                 }
-                spp *= 2;
             }
         }
     }
